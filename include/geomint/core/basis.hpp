@@ -1,0 +1,150 @@
+#pragma once
+/// Bases of degree m on [0, 1] as polynomials: Lagrange on a node family (eq. 8) and
+/// Bernstein (eq. 13). Both interpolate the ends: phi_0(0) = 1, phi_m(1) = 1 and every other
+/// phi_j vanishes at both ends, which is what turns the discrete Euler-Lagrange equation into
+/// a momentum match (eq. 9-11).
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+
+#include "geomint/core/nodes.hpp"
+#include "geomint/core/polynomial.hpp"
+
+namespace geomint {
+
+/// Basis tags.
+struct lagrange {
+  static constexpr std::string_view name = "lagrange";
+};
+struct bernstein {
+  static constexpr std::string_view name = "bernstein";
+};
+
+template <class Basis>
+concept basis_kind = std::is_same_v<Basis, lagrange> || std::is_same_v<Basis, bernstein>;
+
+template <class T, int M>
+using basis_polynomials = std::array<polynomial<T, M>, M + 1>;
+
+/// Barycentric weights w_j = 1 / prod_{k != j} (c_j - c_k) of a node set.
+template <class T, std::size_t N>
+constexpr std::array<T, N> barycentric_weights(const std::array<T, N>& c) {
+  std::array<T, N> w{};
+  for (std::size_t j = 0; j < N; ++j) {
+    T product(1);
+    for (std::size_t k = 0; k < N; ++k)
+      if (k != j) product *= T(c[j] - c[k]);
+    w[j] = T(1) / product;
+  }
+  return w;
+}
+
+/// Lagrange basis l_a(t) = prod_{b != a} (t - c_b) / (c_a - c_b) on a node family (eq. 8).
+template <class Family, int M, class T = double>
+constexpr basis_polynomials<T, M> lagrange_basis() {
+  const auto c = nodes<Family, M, T>();
+  const auto w = barycentric_weights(c);
+  basis_polynomials<T, M> basis{};
+  for (int a = 0; a <= M; ++a) {
+    polynomial<T, M> l(w[static_cast<std::size_t>(a)]);
+    for (int b = 0; b <= M; ++b) {
+      if (b == a) continue;
+      // l <- l * (t - c_b), in place: the degree bound M is never exceeded.
+      const T root = c[static_cast<std::size_t>(b)];
+      for (int k = M; k >= 1; --k) l[k] = l[k - 1] - root * l[k];
+      l[0] = -root * l[0];
+    }
+    basis[static_cast<std::size_t>(a)] = l;
+  }
+  return basis;
+}
+
+/// n choose k as an exact integer (checked for overflow through rational arithmetic).
+constexpr std::int64_t binomial(int n, int k) {
+  if (k < 0 || k > n) return 0;
+  rational r(1);
+  for (int i = 1; i <= k; ++i) r = r * rational(n - k + i, i);
+  return r.num;
+}
+
+/// Bernstein basis b_{a,m}(t) = C(m, a) t^a (1 - t)^(m - a) (eq. 13).
+template <int M, class T = double>
+constexpr basis_polynomials<T, M> bernstein_basis() {
+  static_assert(M >= 1 && M <= max_floating_m, "geomint: Bernstein degree m must be in [1, max_floating_m]");
+  basis_polynomials<T, M> basis{};
+  for (int a = 0; a <= M; ++a) {
+    // (1 - t)^(m-a) = sum_j C(m-a, j) (-t)^j
+    polynomial<T, M> b;
+    for (int j = 0; j <= M - a; ++j) {
+      const std::int64_t sign = (j % 2 == 0) ? 1 : -1;
+      b[a + j] = T(binomial(M, a) * binomial(M - a, j) * sign);
+    }
+    basis[static_cast<std::size_t>(a)] = b;
+  }
+  return basis;
+}
+
+/// The basis polynomials of a (Basis, Family, m, T) choice; the family only matters for Lagrange.
+template <class Basis, class Family, int M, class T = double>
+constexpr basis_polynomials<T, M> basis_polynomials_of() {
+  static_assert(basis_kind<Basis>, "geomint: Basis must be lagrange or bernstein");
+  check_node_parameters<Family, M, T>();
+  if constexpr (std::is_same_v<Basis, lagrange>)
+    return lagrange_basis<Family, M, T>();
+  else
+    return bernstein_basis<M, T>();
+}
+
+namespace detail {
+/// b_{a,n}(t) evaluated directly as C(n,a) t^a (1-t)^(n-a) (all terms positive on [0,1]).
+template <class T>
+constexpr T bernstein_value(int a, int n, const T& t) {
+  if (a < 0 || a > n) return T(0);
+  T value(binomial(n, a));
+  const T one_minus_t = T(1) - t;
+  for (int i = 0; i < a; ++i) value *= t;
+  for (int i = 0; i < n - a; ++i) value *= one_minus_t;
+  return value;
+}
+}  // namespace detail
+
+/// k-th derivatives of all basis functions at t: out[j] = phi_j^(k)(t), any k >= 0.
+/// Bernstein uses the stable difference form
+///   b_{j,m}^(k)(t) = m!/(m-k)! sum_i (-1)^(k-i) C(k,i) b_{j-i,m-k}(t);
+/// Lagrange evaluates the derivative polynomials (Horner).
+template <int K, class Basis, class Family, int M, class T>
+constexpr std::array<T, M + 1> basis_derivatives(const T& t) {
+  static_assert(K >= 0, "geomint: derivative order k must be >= 0");
+  check_node_parameters<Family, M, T>();
+  std::array<T, M + 1> out{};
+  if constexpr (K > M) {
+    for (auto& v : out) v = T(0);
+  } else if constexpr (std::is_same_v<Basis, bernstein>) {
+    T falling(1);  // m!/(m-k)!
+    for (int i = 0; i < K; ++i) falling *= T(M - i);
+    for (int j = 0; j <= M; ++j) {
+      T sum(0);
+      for (int i = 0; i <= K; ++i) {
+        const T term = T(binomial(K, i)) * detail::bernstein_value<T>(j - i, M - K, t);
+        if ((K - i) % 2 == 0)
+          sum += term;
+        else
+          sum -= term;
+      }
+      out[static_cast<std::size_t>(j)] = falling * sum;
+    }
+  } else {
+    const auto basis = lagrange_basis<Family, M, T>();
+    for (int j = 0; j <= M; ++j) out[static_cast<std::size_t>(j)] = derivative<K>(basis[static_cast<std::size_t>(j)])(t);
+  }
+  return out;
+}
+
+/// Values of all basis functions at t.
+template <class Basis, class Family, int M, class T>
+constexpr std::array<T, M + 1> basis_values(const T& t) {
+  return basis_derivatives<0, Basis, Family, M, T>(t);
+}
+
+}  // namespace geomint

@@ -1,0 +1,61 @@
+#pragma once
+/// Differentiation weights D_k[i][j] = phi_j^(k)(c_i): the k-th derivative at node c_i of the
+/// path sum_j phi_j(t) X_j is sum_j D_k[i][j] X_j (on a unit step; divide by tau^k).
+///
+/// Lagrange weights use the barycentric recursion (exact for rational nodes, and backward
+/// stable in floating point, unlike differentiating monomial coefficients):
+///   D_1[i][j] = (w_j / w_i) / (c_i - c_j),
+///   D_k[i][j] = k / (c_i - c_j) * ((w_j / w_i) D_{k-1}[i][i] - D_{k-1}[i][j]),   i != j,
+///   D_k[i][i] = -sum_{j != i} D_k[i][j]   (the derivative of a constant vanishes).
+/// Bernstein weights evaluate the stable difference form of basis_derivatives at the nodes.
+
+#include <array>
+#include <cstddef>
+
+#include "geomint/core/basis.hpp"
+
+namespace geomint {
+
+template <class T, int N>
+using square_array = std::array<std::array<T, N>, N>;
+
+/// D_K for the basis `Basis` collocated at the nodes of `Family`; K = 0 gives basis values.
+template <int K, class Family, int M, class T = double, class Basis = lagrange>
+constexpr square_array<T, M + 1> differentiation_weights() {
+  static_assert(K >= 0, "geomint: derivative order k must be >= 0");
+  static_assert(basis_kind<Basis>, "geomint: Basis must be lagrange or bernstein");
+  check_node_parameters<Family, M, T>();
+  constexpr std::size_t n = M + 1;
+  const auto c = nodes<Family, M, T>();
+  square_array<T, M + 1> D{};
+  if constexpr (std::is_same_v<Basis, bernstein>) {
+    for (std::size_t i = 0; i < n; ++i) D[i] = basis_derivatives<K, bernstein, Family, M, T>(c[i]);
+  } else {
+    const auto w = barycentric_weights(c);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) D[i][j] = (i == j) ? T(1) : T(0);
+    for (int k = 1; k <= K; ++k) {
+      square_array<T, M + 1> next{};
+      for (std::size_t i = 0; i < n; ++i) {
+        T diagonal(0);
+        for (std::size_t j = 0; j < n; ++j) {
+          if (j == i) continue;
+          const T ratio = w[j] / w[i];
+          const T value = (k == 1) ? T(ratio / T(c[i] - c[j]))
+                                   : T(T(k) / T(c[i] - c[j]) * T(ratio * D[i][i] - D[i][j]));
+          next[i][j] = value;
+          diagonal -= value;
+        }
+        next[i][i] = diagonal;
+      }
+      D = next;
+    }
+  }
+  return D;
+}
+
+/// The weights as a constexpr variable (rational, double, long double).
+template <int K, class Family, int M, class T = double, class Basis = lagrange>
+inline constexpr square_array<T, M + 1> differentiation_weights_v = differentiation_weights<K, Family, M, T, Basis>();
+
+}  // namespace geomint

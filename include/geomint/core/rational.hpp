@@ -1,0 +1,135 @@
+#pragma once
+/// Exact rational numbers for constant expressions.
+///
+/// `geomint::rational` is a structural literal type (usable as a template argument), always
+/// reduced with a positive denominator. Numerator and denominator are 64-bit; every operation
+/// computes in 128-bit intermediates, reduces, and then checks that the result fits. Overflow
+/// throws `std::overflow_error`: at run time that is an exception, in a constant expression it
+/// is a compile error, never a wrong value.
+
+#include <compare>
+#include <cstdint>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace geomint {
+
+namespace detail {
+__extension__ using int128 = __int128;
+
+constexpr int128 abs128(int128 x) { return x < 0 ? -x : x; }
+
+constexpr int128 gcd128(int128 a, int128 b) {
+  a = abs128(a);
+  b = abs128(b);
+  while (b != 0) {
+    const int128 r = a % b;
+    a = b;
+    b = r;
+  }
+  return a;
+}
+
+/// Product a*b in 128 bits; overflow of the 128-bit product itself also throws.
+constexpr int128 mul128(int128 a, int128 b) {
+  int128 out = 0;
+  if (__builtin_mul_overflow(a, b, &out)) throw std::overflow_error("geomint::rational overflow");
+  return out;
+}
+
+constexpr int128 add128(int128 a, int128 b) {
+  int128 out = 0;
+  if (__builtin_add_overflow(a, b, &out)) throw std::overflow_error("geomint::rational overflow");
+  return out;
+}
+}  // namespace detail
+
+struct rational {
+  std::int64_t num = 0;  ///< numerator, carries the sign
+  std::int64_t den = 1;  ///< denominator, always > 0; gcd(num, den) = 1
+
+  constexpr rational() = default;
+  /// An integer; implicit so that `rational r = 3;` and mixed arithmetic read naturally.
+  constexpr rational(std::int64_t n) : num(n), den(1) {}  // NOLINT(google-explicit-constructor)
+  /// n/d, reduced; d = 0 throws (a compile error in a constant expression).
+  constexpr rational(std::int64_t n, std::int64_t d) {
+    *this = from_wide(n, d);
+  }
+
+  /// Reduces a 128-bit fraction and checks that it fits in 64 bits.
+  static constexpr rational from_wide(detail::int128 n, detail::int128 d) {
+    if (d == 0) throw std::domain_error("geomint::rational: zero denominator");
+    if (d < 0) {
+      n = -n;
+      d = -d;
+    }
+    const detail::int128 g = detail::gcd128(n, d);
+    if (g > 1) {
+      n /= g;
+      d /= g;
+    }
+    constexpr detail::int128 lo = std::numeric_limits<std::int64_t>::min() + 1;
+    constexpr detail::int128 hi = std::numeric_limits<std::int64_t>::max();
+    if (n < lo || n > hi || d > hi) throw std::overflow_error("geomint::rational overflow");
+    rational r;
+    r.num = static_cast<std::int64_t>(n);
+    r.den = static_cast<std::int64_t>(d);
+    return r;
+  }
+
+  constexpr rational operator-() const { return from_wide(-detail::int128(num), den); }
+  constexpr rational operator+() const { return *this; }
+
+  friend constexpr rational operator+(rational a, rational b) {
+    using detail::int128;
+    return from_wide(detail::add128(detail::mul128(a.num, b.den), detail::mul128(b.num, a.den)),
+                     detail::mul128(a.den, b.den));
+  }
+  friend constexpr rational operator-(rational a, rational b) { return a + (-b); }
+  friend constexpr rational operator*(rational a, rational b) {
+    return from_wide(detail::mul128(a.num, b.num), detail::mul128(a.den, b.den));
+  }
+  friend constexpr rational operator/(rational a, rational b) {
+    if (b.num == 0) throw std::domain_error("geomint::rational: division by zero");
+    return from_wide(detail::mul128(a.num, b.den), detail::mul128(a.den, b.num));
+  }
+  constexpr rational& operator+=(rational b) { return *this = *this + b; }
+  constexpr rational& operator-=(rational b) { return *this = *this - b; }
+  constexpr rational& operator*=(rational b) { return *this = *this * b; }
+  constexpr rational& operator/=(rational b) { return *this = *this / b; }
+
+  /// Reduced form makes member-wise equality exact equality.
+  friend constexpr bool operator==(const rational&, const rational&) = default;
+  friend constexpr std::strong_ordering operator<=>(rational a, rational b) {
+    return detail::mul128(a.num, b.den) <=> detail::mul128(b.num, a.den);
+  }
+
+  /// Conversion to any floating or multiprecision type: one rounding for num and den each
+  /// (none when they fit T's mantissa) and one for the quotient.
+  template <class T>
+  constexpr T to() const {
+    return T(num) / T(den);
+  }
+
+  std::string str() const {
+    return den == 1 ? std::to_string(num) : std::to_string(num) + "/" + std::to_string(den);
+  }
+  friend std::ostream& operator<<(std::ostream& os, const rational& r) { return os << r.str(); }
+};
+
+constexpr rational abs(rational r) { return r.num < 0 ? -r : r; }
+
+/// Converts the library's exact and floating scalars alike: rational -> T, T -> T.
+template <class T, class U>
+constexpr T scalar_cast(const U& value) {
+  if constexpr (std::is_same_v<U, rational>) {
+    return value.template to<T>();
+  } else {
+    return T(value);
+  }
+}
+
+}  // namespace geomint

@@ -1,0 +1,7 @@
+#pragma once
+/// Umbrella header: everything geomint provides.
+#include "geomint/core/rational.hpp"
+#include "geomint/core/polynomial.hpp"
+#include "geomint/core/nodes.hpp"
+#include "geomint/core/basis.hpp"
+#include "geomint/core/differentiation.hpp"

@@ -1,0 +1,26 @@
+#pragma once
+/// The scalar types every runtime test is instantiated for.
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <boost/multiprecision/eigen.hpp>
+#include <limits>
+#include <tuple>
+#ifdef GEOMINT_HAVE_MPFR
+#include <boost/multiprecision/mpfr.hpp>
+#endif
+
+namespace geomint::test {
+using boost::multiprecision::cpp_bin_float_50;
+using boost::multiprecision::cpp_bin_float_100;
+#ifdef GEOMINT_HAVE_MPFR
+using boost::multiprecision::mpfr_float_100;
+using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100, mpfr_float_100>;
+#else
+using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100>;
+#endif
+/// The types that the integrator tests use (the slow ones are left to the core suites).
+using integrator_scalar_types = std::tuple<double, cpp_bin_float_50>;
+
+/// A tolerance of `ulps` units of the scalar's epsilon; never passes through a double literal.
+template <class T>
+T eps_tol(int ulps) { return T(ulps) * std::numeric_limits<T>::epsilon(); }
+}  // namespace geomint::test
