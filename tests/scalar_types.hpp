@@ -1,7 +1,8 @@
 #pragma once
 /// The scalar types every runtime test is instantiated for.
 #include <boost/multiprecision/cpp_bin_float.hpp>
-#include <boost/multiprecision/eigen.hpp>
+#include <geomint/core/multiprecision.hpp>
+#include <cmath>
 #include <limits>
 #include <tuple>
 #ifdef GEOMINT_HAVE_MPFR
@@ -23,4 +24,11 @@ using integrator_scalar_types = std::tuple<double, cpp_bin_float_50>;
 /// A tolerance of `ulps` units of the scalar's epsilon; never passes through a double literal.
 template <class T>
 T eps_tol(int ulps) { return T(ulps) * std::numeric_limits<T>::epsilon(); }
+
+/// |a - b| in T (std::abs for built-in types, Boost's abs found by ADL otherwise).
+template <class T>
+T abs_diff(const T& a, const T& b) {
+  using std::abs;
+  return T(abs(T(a - b)));
+}
 }  // namespace geomint::test

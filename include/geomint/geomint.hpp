@@ -5,3 +5,4 @@
 #include "geomint/core/nodes.hpp"
 #include "geomint/core/basis.hpp"
 #include "geomint/core/differentiation.hpp"
+#include "geomint/core/multiprecision.hpp"

@@ -60,12 +60,18 @@ constexpr basis_polynomials<T, M> lagrange_basis() {
   return basis;
 }
 
-/// n choose k as an exact integer (checked for overflow through rational arithmetic).
+/// n choose k as an exact integer; C(n-k+i, i) = C(n-k+i-1, i-1) (n-k+i) / i divides exactly.
+/// Overflow throws (a compile error in a constant expression).
 constexpr std::int64_t binomial(int n, int k) {
   if (k < 0 || k > n) return 0;
-  rational r(1);
-  for (int i = 1; i <= k; ++i) r = r * rational(n - k + i, i);
-  return r.num;
+  std::int64_t r = 1;
+  for (int i = 1; i <= k; ++i) {
+    std::int64_t product = 0;
+    if (__builtin_mul_overflow(r, std::int64_t(n - k + i), &product))
+      throw std::overflow_error("geomint::binomial overflow");
+    r = product / i;
+  }
+  return r;
 }
 
 /// Bernstein basis b_{a,m}(t) = C(m, a) t^a (1 - t)^(m - a) (eq. 13).

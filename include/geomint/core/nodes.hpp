@@ -197,8 +197,10 @@ constexpr std::array<T, M + 1> nodes() {
     constexpr int interior = M - 1;  // roots of the defining polynomial
     constexpr int lower = interior / 2;  // roots with c < 1/2
     if constexpr (interior % 2 == 1) c[static_cast<std::size_t>(M / 2)] = T(1) / T(2);
-    // Scan (0, 1/2) on a grid finer than the smallest root gap (about 1.4/m^2 in c).
-    constexpr int grid = 8 * M * M + 16;
+    // Scan (0, 1/2) with spacing 1/(2 m^2 + 16): at least twice finer than the smallest gap
+    // between two roots or a root and the end, 1 - x_1 ~ j_0^2 / (2 (m - 1/2)^2) in x, i.e.
+    // about 1.4/m^2 in c (Gauss interior; the Lobatto and Chebyshev gaps are wider).
+    constexpr int grid = M * M + 8;
     int found = 0;
     T left = T(0);
     bool left_negative = detail::defining_polynomial<Family, M, T>(left).value < T(0);

@@ -22,6 +22,18 @@ __extension__ using int128 = __int128;
 
 constexpr int128 abs128(int128 x) { return x < 0 ? -x : x; }
 
+/// gcd of two 64-bit values (>= 1 unless both are 0); a reduced rational never holds INT64_MIN.
+constexpr std::int64_t gcd64(std::int64_t a, std::int64_t b) {
+  a = a < 0 ? -a : a;
+  b = b < 0 ? -b : b;
+  while (b != 0) {
+    const std::int64_t r = a % b;
+    a = b;
+    b = r;
+  }
+  return a == 0 ? 1 : a;
+}
+
 constexpr int128 gcd128(int128 a, int128 b) {
   a = abs128(a);
   b = abs128(b);
@@ -59,6 +71,17 @@ struct rational {
     *this = from_wide(n, d);
   }
 
+  /// A fraction already in lowest terms with a positive denominator; checks that it fits.
+  static constexpr rational narrow(detail::int128 n, detail::int128 d) {
+    constexpr detail::int128 lo = std::numeric_limits<std::int64_t>::min() + 1;
+    constexpr detail::int128 hi = std::numeric_limits<std::int64_t>::max();
+    if (n < lo || n > hi || d > hi) throw std::overflow_error("geomint::rational overflow");
+    rational r;
+    r.num = static_cast<std::int64_t>(n);
+    r.den = static_cast<std::int64_t>(d);
+    return r;
+  }
+
   /// Reduces a 128-bit fraction and checks that it fits in 64 bits.
   static constexpr rational from_wide(detail::int128 n, detail::int128 d) {
     if (d == 0) throw std::domain_error("geomint::rational: zero denominator");
@@ -71,30 +94,41 @@ struct rational {
       n /= g;
       d /= g;
     }
-    constexpr detail::int128 lo = std::numeric_limits<std::int64_t>::min() + 1;
-    constexpr detail::int128 hi = std::numeric_limits<std::int64_t>::max();
-    if (n < lo || n > hi || d > hi) throw std::overflow_error("geomint::rational overflow");
+    return narrow(n, d);
+  }
+
+  constexpr rational operator-() const {
     rational r;
-    r.num = static_cast<std::int64_t>(n);
-    r.den = static_cast<std::int64_t>(d);
+    r.num = -num;  // num > INT64_MIN always (narrow), so this cannot overflow
+    r.den = den;
     return r;
   }
-
-  constexpr rational operator-() const { return from_wide(-detail::int128(num), den); }
   constexpr rational operator+() const { return *this; }
 
+  /// With g = gcd(d1, d2): n1/d1 + n2/d2 = (n1 (d2/g) + n2 (d1/g)) / (d1 d2 / g), and only
+  /// gcd(numerator, g) can remain to cancel (Knuth, TAOCP 4.5.1).
   friend constexpr rational operator+(rational a, rational b) {
-    using detail::int128;
-    return from_wide(detail::add128(detail::mul128(a.num, b.den), detail::mul128(b.num, a.den)),
-                     detail::mul128(a.den, b.den));
+    const std::int64_t g = detail::gcd64(a.den, b.den);
+    const detail::int128 numerator =
+        detail::add128(detail::mul128(a.num, b.den / g), detail::mul128(b.num, a.den / g));
+    const detail::int128 denominator = detail::mul128(a.den / g, b.den);
+    if (g == 1) return narrow(numerator, denominator);
+    return from_wide(numerator, denominator);
   }
   friend constexpr rational operator-(rational a, rational b) { return a + (-b); }
+  /// Cross-cancellation first (Knuth, TAOCP 4.5.1): the product of reduced fractions
+  /// n1 n2 / (d1 d2) is reduced once gcd(n1, d2) and gcd(n2, d1) are divided out.
   friend constexpr rational operator*(rational a, rational b) {
-    return from_wide(detail::mul128(a.num, b.num), detail::mul128(a.den, b.den));
+    const std::int64_t g1 = detail::gcd64(a.num, b.den);
+    const std::int64_t g2 = detail::gcd64(b.num, a.den);
+    return narrow(detail::mul128(a.num / g1, b.num / g2), detail::mul128(a.den / g2, b.den / g1));
   }
   friend constexpr rational operator/(rational a, rational b) {
     if (b.num == 0) throw std::domain_error("geomint::rational: division by zero");
-    return from_wide(detail::mul128(a.num, b.den), detail::mul128(a.den, b.num));
+    rational inverse;
+    inverse.num = b.num < 0 ? -b.den : b.den;
+    inverse.den = b.num < 0 ? -b.num : b.num;
+    return a * inverse;
   }
   constexpr rational& operator+=(rational b) { return *this = *this + b; }
   constexpr rational& operator-=(rational b) { return *this = *this - b; }

@@ -1,0 +1,26 @@
+#pragma once
+/// Boost.Multiprecision scalars in Eigen: Boost's own NumTraits (<boost/multiprecision/eigen.hpp>),
+/// plus one gap filled for Boost 1.74 with Eigen 3.4.
+///
+/// Boost 1.74's NumTraits has no infinity()/quiet_NaN(), which Eigen 3.4's generic
+/// positive_real_hypot names (it is used by the Givens rotations of the eigen-solvers and the
+/// stable norms). Where those members are missing, hypot_impl for Boost numbers is routed to
+/// Boost's own hypot; where a newer Boost provides them, this specialisation drops out.
+#include <Eigen/Core>
+#include <boost/multiprecision/eigen.hpp>
+#include <boost/multiprecision/number.hpp>
+
+namespace geomint::detail {
+template <class Traits>
+concept eigen_traits_have_infinity = requires { Traits::infinity(); Traits::quiet_NaN(); };
+}  // namespace geomint::detail
+
+namespace Eigen::internal {
+template <class Backend, boost::multiprecision::expression_template_option ET>
+  requires(!geomint::detail::eigen_traits_have_infinity<NumTraits<boost::multiprecision::number<Backend, ET>>>)
+struct hypot_impl<boost::multiprecision::number<Backend, ET>> {
+  using Scalar = boost::multiprecision::number<Backend, ET>;
+  using RealScalar = typename NumTraits<Scalar>::Real;
+  static RealScalar run(const Scalar& x, const Scalar& y) { return RealScalar(hypot(x, y)); }
+};
+}  // namespace Eigen::internal
