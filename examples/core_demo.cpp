@@ -2,7 +2,13 @@
 /// rationals for equispaced nodes, 20 significant digits for the irrational families).
 #include <geomint/geomint.hpp>
 
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/legendre.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <vector>
 #include <iomanip>
 #include <iostream>
 #include <utility>
@@ -70,6 +76,41 @@ void print_all(std::integer_sequence<int, Ms...>) {
   (print_family<geomint::gauss_interior, Ms + 2, long double>(), ...);
 }
 
+/// Largest |c_a - reference_a| / eps over the nodes of one family, m, scalar type. References:
+/// Chebyshev sin^2(pi a / 2m); Gauss interior (1 -+ x)/2 from Boost.Math's legendre_p_zeros.
+template <class Family, int M, class T>
+double max_error_in_eps() {
+  using std::abs;
+  using std::sin;
+  const auto c = geomint::nodes<Family, M, T>();
+  std::vector<T> reference;
+  if constexpr (std::is_same_v<Family, geomint::chebyshev_lobatto>) {
+    for (int a = 0; a <= M; ++a) {
+      const T s = sin(T(boost::math::constants::pi<T>() * T(a) / T(2 * M)));
+      reference.push_back(T(s * s));
+    }
+  } else {
+    reference = {T(0), T(1)};
+    for (const T& x : boost::math::legendre_p_zeros<T>(M - 1)) {
+      reference.push_back(T((T(1) - x) / T(2)));
+      if (x != T(0)) reference.push_back(T((T(1) + x) / T(2)));
+    }
+    std::sort(reference.begin(), reference.end());
+  }
+  T worst(0);
+  for (std::size_t a = 0; a < c.size(); ++a) worst = std::max(worst, T(abs(T(c[a] - reference[a]))));
+  return static_cast<double>(worst / std::numeric_limits<T>::epsilon());
+}
+
+template <class T, int... Ms>
+void print_accuracy_row(const char* type_name, std::integer_sequence<int, Ms...>) {
+  std::cout << std::setw(18) << type_name << " | chebyshev max error / eps:";
+  ((std::cout << ' ' << std::setprecision(2) << max_error_in_eps<geomint::chebyshev_lobatto, Ms + 2, T>()), ...);
+  std::cout << "\n" << std::setw(18) << "" << " | gauss-interior max error / eps:";
+  ((std::cout << ' ' << std::setprecision(2) << max_error_in_eps<geomint::gauss_interior, Ms + 2, T>()), ...);
+  std::cout << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -79,5 +120,9 @@ int main(int argc, char** argv) {
     return std::strcmp(argv[i], "--help") == 0 ? 0 : 2;
   }
   print_all(std::make_integer_sequence<int, 5>{});
+  std::cout << "--- node accuracy against independent references, m = 2..16 ---\n";
+  print_accuracy_row<double>("double", std::make_integer_sequence<int, 15>{});
+  print_accuracy_row<boost::multiprecision::cpp_bin_float_50>("cpp_bin_float_50", std::make_integer_sequence<int, 15>{});
+  print_accuracy_row<boost::multiprecision::cpp_bin_float_100>("cpp_bin_float_100", std::make_integer_sequence<int, 15>{});
   return 0;
 }
