@@ -14,6 +14,12 @@ using boost::multiprecision::cpp_bin_float_50;
 using boost::multiprecision::cpp_bin_float_100;
 #ifdef GEOMINT_HAVE_MPFR
 using boost::multiprecision::mpfr_float_100;
+#endif
+#if defined(GEOMINT_REDUCED_SCALAR_TYPES)
+/// The sanitizer build looks for memory errors and undefined behaviour, not for precision: one
+/// built-in and one multiprecision type keep its build short. The other presets run all types.
+using scalar_types = std::tuple<double, cpp_bin_float_50>;
+#elif defined(GEOMINT_HAVE_MPFR)
 using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100, mpfr_float_100>;
 #else
 using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100>;
