@@ -6,3 +6,6 @@
 #include "geomint/core/basis.hpp"
 #include "geomint/core/differentiation.hpp"
 #include "geomint/core/multiprecision.hpp"
+#include "geomint/lie/so3.hpp"
+#include "geomint/lie/se3.hpp"
+#include "geomint/beam/beam.hpp"

@@ -1,0 +1,367 @@
+#pragma once
+/// The Poisson integrator of the geometrically exact beam (beam paper, Algorithm 1) and the
+/// "Hamel" variant, on the staggered grid with free ends.
+///
+/// One step n -> n+1:
+///   1. scheme (53) (or its Hamel variant) at every node: a 6x6 Newton solve for mu_j^{n+1};
+///   2. scheme (54) on every segment: a 6x6 linear solve for gamma_{j+1/2}^{n+1};
+///   3. Cayley reconstruction (55): g_j^{n+1} = g_j^n cay(dt zeta_j), zeta = D1^{-1} mu,
+///      with zeta_j = zeta_j^n as printed in the paper (`cayley_velocity::previous`), or
+///      zeta_j^{n+1} / the average of the two (options; see docs/beam.md for what each does to
+///      the momentum).
+/// The step is computed into separate buffers and committed only when every value is finite,
+/// every Newton solve has converged and the energy has not blown up; otherwise a `step_error`
+/// naming the step is thrown and the state stays at the last good step.
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geomint/beam/grid.hpp"
+#include "geomint/beam/kernels.hpp"
+#include "geomint/beam/material.hpp"
+#include "geomint/lie/se3.hpp"
+
+namespace geomint::beam {
+
+/// Which time discretisation of the bracket term [zeta, mu]^* in the momentum equation.
+enum class scheme {
+  poisson,  ///< eq. (53): implicit midpoint, [(zeta^{n+1}+zeta^n)/2, (mu^{n+1}+mu^n)/2]^*
+  hamel     ///< trapezoidal rule, 1/2([zeta^{n+1}, mu^{n+1}]^* + [zeta^n, mu^n]^*)
+};
+
+/// The velocity used by the per-node Cayley reconstruction (55).
+enum class cayley_velocity {
+  previous,  ///< zeta^n: eq. (55) as printed, g^{n+1} = g^n cay(dt D1^{-1} mu^n)
+  current,   ///< zeta^{n+1}: the velocity scheme (54) uses for the same step
+  midpoint   ///< (zeta^n + zeta^{n+1})/2
+};
+
+/// Which configurations the diagnostics (momentum, centreline) use.
+enum class reconstruction {
+  per_node,          ///< g_j integrated in time at every node by (55)
+  strain_consistent  ///< g_0 by (55), then g_{j+1} = g_j cay(ds (gamma_{j+1/2} + e2))
+};
+
+inline const char* to_string(scheme s) { return s == scheme::poisson ? "poisson" : "hamel"; }
+
+template <class T>
+struct options {
+  T dt = T(0);                                        ///< time step (must be set, > 0)
+  scheme method = scheme::poisson;
+  cayley_velocity velocity = cayley_velocity::previous;
+  reconstruction configurations = reconstruction::per_node;
+  int max_newton_iterations = 12;
+  /// Use the structured node solve (3x3 Newton + closed-form translational block) when the
+  /// translational inertia is isotropic; false forces the general 6x6 Newton (LU).
+  bool structured_solve = true;
+  /// A step whose total energy exceeds this factor times the initial energy is rejected as
+  /// unstable (the scheme keeps the energy within O(dt) of its initial value when stable).
+  T energy_growth_limit = T(100);
+};
+
+/// A step could not be completed; the integrator state is the one before the step.
+class step_error : public std::runtime_error {
+ public:
+  enum class kind { newton_failure, non_finite, energy_growth };
+  step_error(long step, kind k, int node, const std::string& what) : std::runtime_error(what), step_(step), kind_(k), node_(node) {}
+  long step() const { return step_; }  ///< the step being computed (1 = the first step)
+  kind reason() const { return kind_; }
+  int node() const { return node_; }   ///< the node concerned, or -1
+ private:
+  long step_;
+  kind kind_;
+  int node_;
+};
+
+/// Energies and spatial momentum of a beam state.
+template <class T>
+struct diagnostics {
+  long step = 0;
+  T t = T(0);
+  T kinetic = T(0);    ///< ds sum_j 1/2 <mu_j, D1^{-1} mu_j>, j = 0..J (full weight at the ends)
+  T potential = T(0);  ///< ds sum_j 1/2 <D2 gamma_{j+1/2}, gamma_{j+1/2}> over the segments
+  T total = T(0);
+  vec3<T> P = vec3<T>::Zero();  ///< spatial linear momentum  ds sum_j R_j p_j
+  vec3<T> L = vec3<T>::Zero();  ///< spatial angular momentum ds sum_j (R_j pi_j + x_j x R_j p_j)
+};
+
+/// How far the per-node reconstruction is from the strain-consistent one.
+template <class T>
+struct reconstruction_drift {
+  T max_position = T(0);  ///< max_j |x_j - x~_j|
+  T max_rotation = T(0);  ///< max_j angle(R_j^T R~_j)
+};
+
+/// Newton statistics since construction.
+struct newton_statistics {
+  long solves = 0;
+  long iterations = 0;
+  int max_iterations = 0;
+};
+
+template <class T>
+class integrator {
+ public:
+  using state_vector = std::vector<vec6<T>>;
+  using configuration_vector = std::vector<lie::SE3<T>>;
+
+  /// mu0: J+1 node momenta; gamma0: J segment strains; g0: J+1 node configurations (default:
+  /// the strain-consistent chain from g_0 = identity, g_{j+1} = g_j cay(ds (gamma0 + e2))).
+  integrator(const material<T>& mat, const staggered_grid<T>& grid, state_vector mu0, state_vector gamma0,
+             const options<T>& opt, std::optional<configuration_vector> g0 = std::nullopt)
+      : mat_(mat), grid_(grid), opt_(opt), mu_(std::move(mu0)), gamma_(std::move(gamma0)) {
+    mat_.validate();
+    if (!(opt_.dt > T(0)) || !(opt_.dt - opt_.dt == T(0)))
+      throw std::invalid_argument("geomint::beam::integrator: the time step dt must be finite and > 0");
+    if (opt_.max_newton_iterations < 1)
+      throw std::invalid_argument("geomint::beam::integrator: max_newton_iterations must be >= 1");
+    const int J = grid_.segments;
+    if (static_cast<int>(mu_.size()) != J + 1)
+      throw std::invalid_argument("geomint::beam::integrator: mu0 must have J + 1 = " + std::to_string(J + 1) + " entries");
+    if (static_cast<int>(gamma_.size()) != J)
+      throw std::invalid_argument("geomint::beam::integrator: gamma0 must have J = " + std::to_string(J) + " entries");
+    for (const auto& m : mu_)
+      if (!m.allFinite()) throw std::invalid_argument("geomint::beam::integrator: mu0 is not finite");
+    for (const auto& g : gamma_)
+      if (!g.allFinite()) throw std::invalid_argument("geomint::beam::integrator: gamma0 is not finite");
+    d1inv_ = mat_.D1.cwiseInverse();
+    structured_ = opt_.structured_solve && mat_.D1(3) == mat_.D1(4) && mat_.D1(4) == mat_.D1(5);
+    ds_ = grid_.ds();
+    if (g0) {
+      if (static_cast<int>(g0->size()) != J + 1)
+        throw std::invalid_argument("geomint::beam::integrator: g0 must have J + 1 entries");
+      g_ = std::move(*g0);
+    } else {
+      g_.assign(J + 1, lie::SE3<T>::identity());
+      g_ = chain_from(g_[0]);
+    }
+    zeta_.resize(J + 1);
+    for (int j = 0; j <= J; ++j) zeta_[j] = d1inv_.cwiseProduct(mu_[j]);
+    sigma_.resize(J);
+    force_.resize(J);
+    for (int j = 0; j < J; ++j) segment_stress(gamma_[j], sigma_[j], force_[j]);
+    mu_next_ = mu_;
+    zeta_next_ = zeta_;
+    gamma_next_ = gamma_;
+    sigma_next_ = sigma_;
+    force_next_ = force_;
+    g_next_ = g_;
+    energy0_ = energy();
+  }
+
+  const material<T>& mat() const { return mat_; }
+  const staggered_grid<T>& grid() const { return grid_; }
+  const options<T>& opts() const { return opt_; }
+  long steps_taken() const { return step_; }
+  T time() const { return T(step_) * opt_.dt; }
+  const state_vector& mu() const { return mu_; }
+  const state_vector& gamma() const { return gamma_; }
+  /// The per-node configurations integrated by (55).
+  const configuration_vector& node_configurations() const { return g_; }
+  /// g_0 from (55), then g_{j+1} = g_j cay(ds (gamma_{j+1/2} + e2)).
+  configuration_vector strain_consistent_configurations() const { return chain_from(g_[0]); }
+  /// The configurations the options select for diagnostics.
+  configuration_vector configurations() const {
+    return opt_.configurations == reconstruction::per_node ? g_ : strain_consistent_configurations();
+  }
+  const newton_statistics& newton() const { return stats_; }
+  T initial_energy() const { return energy0_; }
+
+  /// ds / max_i sqrt(D2_i / D1_i): the CFL bound of the explicit (symplectic Euler) part
+  /// for the fastest linear wave; informational (used in error messages).
+  T stability_estimate() const {
+    using std::sqrt;
+    T c2 = T(0);
+    for (int i = 0; i < 6; ++i) c2 = std::max<T>(c2, mat_.D2(i) / mat_.D1(i));
+    return ds_ / sqrt(c2);
+  }
+
+  /// Total energy ds (sum_j 1/2 <mu_j, zeta_j> + sum_segments 1/2 <sigma, gamma>).
+  T energy() const {
+    T k = T(0), p = T(0);
+    for (std::size_t j = 0; j < mu_.size(); ++j) k += mu_[j].dot(zeta_[j]);
+    for (std::size_t j = 0; j < gamma_.size(); ++j) p += sigma_[j].dot(gamma_[j]);
+    return ds_ * (k + p) / T(2);
+  }
+
+  diagnostics<T> diagnose() const {
+    diagnostics<T> d;
+    d.step = step_;
+    d.t = time();
+    T k = T(0), p = T(0);
+    for (std::size_t j = 0; j < mu_.size(); ++j) k += mu_[j].dot(zeta_[j]);
+    for (std::size_t j = 0; j < gamma_.size(); ++j) p += sigma_[j].dot(gamma_[j]);
+    d.kinetic = ds_ * k / T(2);
+    d.potential = ds_ * p / T(2);
+    d.total = d.kinetic + d.potential;
+    const configuration_vector g = configurations();
+    vec6<T> J = vec6<T>::Zero();
+    for (std::size_t j = 0; j < mu_.size(); ++j) J += lie::coAd<T>(g[j], mu_[j]);
+    J *= ds_;
+    d.L = J.template head<3>();
+    d.P = J.template tail<3>();
+    return d;
+  }
+
+  reconstruction_drift<T> drift() const {
+    const configuration_vector c = strain_consistent_configurations();
+    reconstruction_drift<T> d;
+    for (std::size_t j = 0; j < g_.size(); ++j) {
+      d.max_position = std::max<T>(d.max_position, (g_[j].x - c[j].x).norm());
+      d.max_rotation = std::max<T>(d.max_rotation, lie::so3_angle<T>(mat3<T>(g_[j].R.transpose() * c[j].R)));
+    }
+    return d;
+  }
+
+  /// Advances one step; throws step_error (state unchanged) if it cannot be completed.
+  void step() {
+    const int J = grid_.segments;
+    const T dt = opt_.dt, h = opt_.dt / T(2);
+    const long n1 = step_ + 1;
+    const bool poisson = opt_.method == scheme::poisson;
+    // 1. Scheme (53) per node.
+    for (int j = 0; j <= J; ++j) {
+      vec6<T> F = vec6<T>::Zero();
+      if (j < J) F += sigma_[j] / ds_ - force_[j] / T(2);
+      if (j > 0) F -= sigma_[j - 1] / ds_ + force_[j - 1] / T(2);
+      const vec6<T>& m = mu_[j];
+      vec6<T> c;
+      if (poisson)
+        c = m + h * F;
+      else
+        c = m + dt * F + h * lie::dual_bracket<T>(zeta_[j], m);
+      // Predictor: one fixed-point step of x = c + h Q(x) from x = c (error O(h^2)); the
+      // structured path only needs the rotational part, pi = c_pi + h c_pi x (Dr c_pi).
+      vec6<T> x = c;
+      if (structured_) {
+        const vec3<T> cpi = c.template head<3>();
+        x.template head<3>() += h * cpi.cross(vec3<T>(d1inv_.template head<3>().cwiseProduct(cpi)));
+      } else {
+        x += h * rigid_bracket<T>(c, d1inv_);
+      }
+      const newton_result<T> r = structured_ ? solve_node_isotropic<T>(x, c, h, d1inv_, opt_.max_newton_iterations)
+                                             : solve_node<T>(x, c, h, d1inv_, opt_.max_newton_iterations);
+      stats_.solves += 1;
+      stats_.iterations += r.iterations;
+      stats_.max_iterations = std::max(stats_.max_iterations, r.iterations);
+      if (!r.finite) fail_non_finite(n1, j, "the Newton solve of scheme (53)");
+      if (!r.converged) fail_newton(n1, j, r);
+      mu_next_[j] = poisson ? vec6<T>(T(2) * x - m) : x;
+      zeta_next_[j] = d1inv_.cwiseProduct(mu_next_[j]);
+    }
+    // 2. Scheme (54) per segment.
+    for (int j = 0; j < J; ++j) {
+      gamma_next_[j] = segment_update<T>(gamma_[j], zeta_next_[j], zeta_next_[j + 1], dt, ds_);
+      segment_stress(gamma_next_[j], sigma_next_[j], force_next_[j]);
+    }
+    // 3. Cayley reconstruction (55).
+    for (int j = 0; j <= J; ++j) {
+      vec6<T> z;
+      switch (opt_.velocity) {
+        case cayley_velocity::previous: z = zeta_[j]; break;
+        case cayley_velocity::current: z = zeta_next_[j]; break;
+        default: z = (zeta_[j] + zeta_next_[j]) / T(2); break;
+      }
+      g_next_[j] = g_[j] * lie::cay<T>(vec6<T>(dt * z));
+    }
+    // Checks, then commit.
+    T k = T(0), p = T(0);
+    for (int j = 0; j <= J; ++j) k += mu_next_[j].dot(zeta_next_[j]);
+    for (int j = 0; j < J; ++j) p += sigma_next_[j].dot(gamma_next_[j]);
+    const T e = ds_ * (k + p) / T(2);
+    if (!(e - e == T(0))) {
+      for (int j = 0; j <= J; ++j)
+        if (!mu_next_[j].allFinite()) fail_non_finite(n1, j, "scheme (53)");
+      for (int j = 0; j < J; ++j)
+        if (!gamma_next_[j].allFinite()) fail_non_finite(n1, j, "scheme (54) (segment j + 1/2)");
+      fail_non_finite(n1, -1, "the energy");
+    }
+    for (int j = 0; j <= J; ++j)
+      if (!g_next_[j].R.allFinite() || !g_next_[j].x.allFinite()) fail_non_finite(n1, j, "the Cayley reconstruction (55)");
+    if (e > opt_.energy_growth_limit * energy0_) {
+      std::ostringstream os;
+      os << "geomint::beam: step " << n1 << " (t = " << time_string(n1) << "): the total energy grew from " << energy0_
+         << " to " << e << " (more than " << opt_.energy_growth_limit
+         << " times): the time step dt = " << opt_.dt << " is beyond the stability limit (estimate ds/c_max = "
+         << stability_estimate() << ")";
+      throw step_error(n1, step_error::kind::energy_growth, -1, os.str());
+    }
+    mu_.swap(mu_next_);
+    zeta_.swap(zeta_next_);
+    gamma_.swap(gamma_next_);
+    sigma_.swap(sigma_next_);
+    force_.swap(force_next_);
+    g_.swap(g_next_);
+    step_ = n1;
+  }
+
+  /// Advances n steps.
+  void advance(long n) {
+    for (long i = 0; i < n; ++i) step();
+  }
+
+ private:
+  // sigma = D2 gamma, force = [gamma + e2, sigma]^*.
+  void segment_stress(const vec6<T>& gamma, vec6<T>& sigma, vec6<T>& force) const {
+    sigma = mat_.D2.cwiseProduct(gamma);
+    vec6<T> Gamma = gamma;
+    Gamma(4) += T(1);
+    force = lie::dual_bracket<T>(Gamma, sigma);
+  }
+
+  configuration_vector chain_from(const lie::SE3<T>& g0) const {
+    configuration_vector c(gamma_.size() + 1);
+    c[0] = g0;
+    for (std::size_t j = 0; j < gamma_.size(); ++j) {
+      vec6<T> Gamma = gamma_[j];
+      Gamma(4) += T(1);
+      c[j + 1] = c[j] * lie::cay<T>(vec6<T>(ds_ * Gamma));
+    }
+    return c;
+  }
+
+  std::string time_string(long n) const {
+    std::ostringstream os;
+    os << T(n) * opt_.dt;
+    return os.str();
+  }
+
+  [[noreturn]] void fail_non_finite(long n1, int node, const char* where) const {
+    std::ostringstream os;
+    os << "geomint::beam: step " << n1 << " (t = " << time_string(n1) << "): non-finite value in " << where;
+    if (node >= 0) os << " at node/segment " << node;
+    os << "; the time step dt = " << opt_.dt << " is probably beyond the stability limit (estimate ds/c_max = "
+       << stability_estimate() << ")";
+    throw step_error(n1, step_error::kind::non_finite, node, os.str());
+  }
+
+  [[noreturn]] void fail_newton(long n1, int node, const newton_result<T>& r) const {
+    std::ostringstream os;
+    os << "geomint::beam: step " << n1 << " (t = " << time_string(n1) << "): the Newton solve of scheme (53) ("
+       << to_string(opt_.method) << ") at node " << node << " did not converge in " << opt_.max_newton_iterations
+       << " iterations (weighted residual " << r.residual << " > tolerance " << r.tolerance << "); the time step dt = "
+       << opt_.dt << " is probably beyond the stability limit (estimate ds/c_max = " << stability_estimate() << ")";
+    throw step_error(n1, step_error::kind::newton_failure, node, os.str());
+  }
+
+  material<T> mat_;
+  staggered_grid<T> grid_;
+  options<T> opt_;
+  vec6<T> d1inv_;
+  bool structured_ = false;
+  T ds_;
+  long step_ = 0;
+  T energy0_ = T(0);
+  newton_statistics stats_;
+  state_vector mu_, zeta_, gamma_, sigma_, force_;
+  state_vector mu_next_, zeta_next_, gamma_next_, sigma_next_, force_next_;
+  configuration_vector g_, g_next_;
+};
+
+}  // namespace geomint::beam
