@@ -1,0 +1,375 @@
+#pragma once
+/// The constrained LPF integrator (LPF paper, eq. 4, 5, 14; DESIGN.md section 4).
+///
+/// On [t_k, t_k + tau] the path is x(t) = sum_j phi_j((t - t_k)/tau) X_j as in the free
+/// integrator. At the interior nodes c_1..c_{m-1} the constrained Euler-Lagrange equations (4)
+/// hold with multipliers lambda_i, and f(x(c_i)) = 0. At t_k the discrete equation (5) allows a
+/// momentum jump along grad f(x^k); it is split RATTLE-fashion between the two steps that meet
+/// at t_k, so that every stored momentum satisfies the hidden constraint G(q) qdot = 0:
+///
+///   one step (q_k, p_k) -> (q_{k+1}, p_{k+1}), unknowns X_1..X_m, mu_1..mu_{m-1}, nu:
+///     dL/dqdot(t_k) = p_k - G(q_k)^T nu / tau                       (left end, eq. 9 and 5)
+///     E(x_i, xdot_i, xddot_i) = G(x_i)^T mu_i / tau^2, f(x_i) = 0   (interior, eq. 4)
+///     f(X_m) = 0                                                     (eq. 5 at t_{k+1})
+///   then p_{k+1} = dL/dqdot(t_{k+1}) - G(q_{k+1})^T Lambda with Lambda chosen so that the
+///   velocity w of p_{k+1} satisfies G(q_{k+1}) w = 0 (the hidden constraint).
+///
+/// Adding the two half-jumps that meet at t_k gives eq. (5) with tau lambda^k = nu + Lambda,
+/// and f(x^k) = 0 at every step. Dropping the jump and the end condition (nu = 0, no f(X_m)
+/// = 0) leaves the paper's printed scheme (23) for the particle on a circle (`endpoint_terms`).
+/// mu = tau^2 lambda and nu are the unknowns, so every Jacobian column is O(1).
+
+#include <array>
+#include <string>
+
+#include "geomint/constraints/constraint.hpp"
+#include "geomint/lpf/integrator.hpp"
+
+namespace geomint {
+
+/// Whether the two-step form keeps eq. (5)'s terms at t_k (multiplier and f(x^k) = 0).
+enum class endpoint_terms { keep, drop };
+
+namespace detail {
+
+template <class Sys, class Con, class T, int M>
+class constrained_lpf_engine {
+ public:
+  static constexpr int n = Sys::dof;
+  static constexpr int c = Con::count;
+  using V = vec<T, n>;
+  using W = Eigen::Matrix<T, M + 1, M + 1>;
+  using controls = Eigen::Matrix<T, n, M + 1>;
+  using D = derivatives<Sys, T>;
+  using F = constraint_derivatives<Con, T, n>;
+
+  constrained_lpf_engine(const Sys& sys, const Con& con, const W& D0, const W& D1, const W& D2,
+                         const std::array<T, M + 1>& nodes)
+      : sys_(sys), con_(con), D0_(D0), D1_(D1), D2_(D2), D0inv_(inverse_of(D0)), c_(nodes) {}
+
+  const Sys& system() const { return sys_; }
+  const Con& constraints() const { return con_; }
+
+  /// (q_k, p_k) -> (q_{k+1}, p_{k+1}); both ends on the constraint, p_{k+1} projected.
+  step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt) const {
+    V x1;
+    controls X;
+    step_status st = forward(q, p, tau, endpoint_terms::keep, opt, X);
+    if (!st) return st;
+    q1 = X.col(M);
+    V p_end = D::gradient(sys_, q1, V(combine(X, D1_, M) / tau)).Lv;
+    if (!project_momentum(q1, p_end, p1)) st.reason = step_failure::singular_jacobian;
+    return st;
+  }
+
+  /// The two-step form (x^{k-1}, x^k) -> x^{k+1}: momentum at t_k from the constrained path on
+  /// [t_{k-1}, t_k], then the forward solve with or without eq. (5)'s end terms.
+  step_status two_step(const V& x_prev, const V& x_curr, const T& tau, endpoint_terms ends, V& x_next,
+                       const newton_options<T>& opt) const {
+    V p_minus;
+    step_status st = end_momentum(x_prev, x_curr, tau, p_minus, opt);
+    if (!st) return st;
+    controls X;
+    st = forward(x_curr, p_minus, tau, ends, opt, X);
+    if (st) x_next = X.col(M);
+    return st;
+  }
+
+  /// dL/dqdot at t_k of the path on [t_{k-1}, t_k] through x^{k-1}, x^k whose interior nodes
+  /// satisfy eq. (4) and f = 0 (eq. 10).
+  step_status end_momentum(const V& x0, const V& x1, const T& tau, V& p1, const newton_options<T>& opt) const {
+    controls X;
+    for (int i = 0; i <= M; ++i) X.col(i) = x0 + c_[static_cast<std::size_t>(i)] * (x1 - x0);
+    const controls values = X;
+    for (int j = 0; j <= M; ++j) X.col(j) = combine(values, D0inv_, j);
+    X.col(0) = x0;
+    X.col(M) = x1;
+    constexpr int N = (M - 1) * (n + c);
+    vec<T, N> z = vec<T, N>::Zero();
+    for (int j = 1; j < M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
+    constexpr int mu_offset = (M - 1) * n;
+    auto residual = [&](const vec<T, N>& zz, vec<T, N>& Fv, mat<T, N>& J) {
+      for (int j = 1; j < M; ++j) X.col(j) = zz.template segment<n>((j - 1) * n);
+      Fv.setZero();
+      J.setZero();
+      for (int i = 1; i < M; ++i)
+        interior_rows<N>(X, zz, tau, i, /*row=*/(i - 1), /*first unknown=*/1, /*last unknown=*/M - 1, mu_offset,
+                         (M - 1) * n, Fv, J);
+    };
+    step_status st = newton_solve<N, T>(residual, z, opt);
+    if (!st) return st;
+    for (int j = 1; j < M; ++j) X.col(j) = z.template segment<n>((j - 1) * n);
+    p1 = D::gradient(sys_, x1, V(combine(X, D1_, M) / tau)).Lv;
+    return st;
+  }
+
+  /// The momentum p with dL/dqdot(q, w) = p_end - G(q)^T Lambda and G(q) w = 0 (Newton on
+  /// (w, Lambda); one linear solve for a natural system). False if the saddle system is singular.
+  bool project_momentum(const V& q, const V& p_end, V& p) const {
+    const auto g = F::first(con_, q);
+    constexpr int K = n + c;
+    V w;
+    if (!D::velocity(sys_, q, p_end, w)) return false;
+    vec<T, c> Lambda = vec<T, c>::Zero();
+    const T eps = std::numeric_limits<T>::epsilon();
+    for (int it = 0; it < 50; ++it) {
+      const hessian_data<T, n> h = D::hessian(sys_, q, w);
+      vec<T, K> r;
+      r.template head<n>() = h.Lv + g.G.transpose() * Lambda - p_end;
+      r.template tail<c>() = g.G * w;
+      mat<T, K> A = mat<T, K>::Zero();
+      A.template topLeftCorner<n, n>() = h.Lvv;
+      A.template topRightCorner<n, c>() = g.G.transpose();
+      A.template bottomLeftCorner<c, n>() = g.G;
+      vec<T, K> delta;
+      if (!solve_small<T, K>(A, vec<T, K>(-r), delta)) return false;
+      w += delta.template head<n>();
+      Lambda += delta.template tail<c>();
+      if (delta.template lpNorm<Eigen::Infinity>() <= T(16) * eps * (T(1) + w.template lpNorm<Eigen::Infinity>())) {
+        p = D::gradient(sys_, q, w).Lv;
+        return all_finite(p);
+      }
+    }
+    return false;
+  }
+
+ private:
+  /// Forward solve from (x^k, p) with X_0 = x^k. With `keep`: unknowns X_1..X_m, mu_1..mu_{m-1},
+  /// nu and the end condition f(X_m) = 0; with `drop`: nu = 0 and no end condition.
+  step_status forward(const V& q, const V& p, const T& tau, endpoint_terms ends, const newton_options<T>& opt,
+                      controls& X) const {
+    V v0;
+    if (!D::velocity(sys_, q, p, v0)) return {step_failure::singular_jacobian, 0, 0};
+    const V a0 = D::acceleration(sys_, q, v0);
+    X = predict_controls<T, n, M>(D0inv_, c_, q, v0, a0, tau);
+    X.col(0) = q;
+    if (ends == endpoint_terms::keep) return forward_solve<M * (n + c), true>(q, p, tau, opt, X);
+    return forward_solve<M * n + (M - 1) * c, false>(q, p, tau, opt, X);
+  }
+
+  template <int N, bool keep_ends>
+  step_status forward_solve(const V& q, const V& p, const T& tau, const newton_options<T>& opt, controls& X) const {
+    constexpr int mu_offset = M * n;                  // mu_1..mu_{m-1}
+    [[maybe_unused]] constexpr int nu_offset = M * n + (M - 1) * c;  // nu (keep only)
+    vec<T, N> z = vec<T, N>::Zero();
+    for (int j = 1; j <= M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
+    const auto g0 = F::first(con_, q);
+    auto residual = [&](const vec<T, N>& zz, vec<T, N>& Fv, mat<T, N>& J) {
+      for (int j = 1; j <= M; ++j) X.col(j) = zz.template segment<n>((j - 1) * n);
+      Fv.setZero();
+      J.setZero();
+      // Rows 0..n-1: tau (dL/dqdot(t_k) - p) + G(q_k)^T nu = 0 (eq. 9 with the jump of eq. 5).
+      {
+        const V v = combine(X, D1_, 0) / tau;
+        const hessian_data<T, n> h = D::hessian(sys_, q, v);
+        Fv.template segment<n>(0) = tau * (h.Lv - p);
+        for (int j = 1; j <= M; ++j)
+          J.template block<n, n>(0, (j - 1) * n) = (tau * D0_(0, j)) * h.Lvq + D1_(0, j) * h.Lvv;
+        if constexpr (keep_ends) {
+          Fv.template segment<n>(0) += g0.G.transpose() * zz.template segment<c>(nu_offset);
+          J.template block<n, c>(0, nu_offset) = g0.G.transpose();
+        }
+      }
+      // Interior nodes: eq. (4) and f = 0.
+      for (int i = 1; i < M; ++i) interior_rows<N>(X, zz, tau, i, i, 1, M, mu_offset, M * n, Fv, J);
+      // f(X_m) = 0 at t_{k+1} (eq. 5).
+      if constexpr (keep_ends) {
+        const auto gm = F::first(con_, V(X.col(M)));
+        Fv.template segment<c>(nu_offset) = gm.f;
+        J.template block<c, n>(nu_offset, (M - 1) * n) = gm.G;
+      }
+    };
+    step_status st = newton_solve<N, T>(residual, z, opt);
+    if (st)
+      for (int j = 1; j <= M; ++j) X.col(j) = z.template segment<n>((j - 1) * n);
+    return st;
+  }
+
+  /// Rows of interior node i: tau^2 E(x_i, xdot_i, xddot_i) - G(x_i)^T mu_i = 0 at row block
+  /// `row` (n rows) and f(x_i) = 0 at rows constraint_rows + (i-1) c; derivatives for the
+  /// unknowns X_jlo..X_jhi (stored from column 0) and mu_i (column mu_offset + (i-1) c).
+  template <int N>
+  void interior_rows(const controls& X, const vec<T, N>& z, const T& tau, int i, int row, int jlo, int jhi,
+                     int mu_offset, int constraint_rows, vec<T, N>& Fv, mat<T, N>& J) const {
+    const V x = combine(X, D0_, i);
+    const V v = combine(X, D1_, i) / tau;
+    const V a = combine(X, D2_, i) / (tau * tau);
+    const el_data<T, n> e = D::euler_lagrange(sys_, x, v, a);
+    const auto g = F::second(con_, x);
+    const int mu_col = mu_offset + (i - 1) * c;
+    const vec<T, c> mu = z.template segment<c>(mu_col);
+    mat<T, n> curvature = mat<T, n>::Zero();  // sum_l mu_l H_l
+    for (int l = 0; l < c; ++l) curvature += mu[l] * g.H[static_cast<std::size_t>(l)];
+    const T tau2 = tau * tau;
+    Fv.template segment<n>(row * n) = tau2 * e.E - g.G.transpose() * mu;
+    const int f_row = constraint_rows + (i - 1) * c;
+    Fv.template segment<c>(f_row) = g.f;
+    for (int j = jlo; j <= jhi; ++j) {
+      const int col = (j - jlo) * n;
+      J.template block<n, n>(row * n, col) =
+          D0_(i, j) * (tau2 * e.Ex - curvature) + (tau * D1_(i, j)) * e.Ev + D2_(i, j) * e.Ea;
+      J.template block<c, n>(f_row, col) = D0_(i, j) * g.G;
+    }
+    J.template block<n, c>(row * n, mu_col) = -g.G.transpose();
+  }
+
+  Sys sys_;
+  Con con_;
+  W D0_, D1_, D2_, D0inv_;
+  std::array<T, M + 1> c_;
+};
+
+}  // namespace detail
+
+/// The constrained LPF scheme: `constrained_lpf<2, equispaced, lagrange>`.
+template <int M, class Family = equispaced, class Basis = lagrange>
+struct constrained_lpf {
+  static_assert(M >= 2, "geomint::constrained_lpf: m must be >= 2 (eq. 4 needs an interior node)");
+  static_assert(M <= max_floating_m, "geomint::constrained_lpf: m must be <= max_floating_m (16)");
+  static_assert(node_family<Family>,
+                "geomint::constrained_lpf: Family must be equispaced, gauss_lobatto, chebyshev_lobatto or gauss_interior");
+  static_assert(basis_kind<Basis>, "geomint::constrained_lpf: Basis must be lagrange or bernstein");
+  static constexpr int m = M;
+  static std::string name() {
+    return "constrained-lpf(m=" + std::to_string(M) + ", " + std::string(Family::name) + ", " +
+           std::string(Basis::name) + ")";
+  }
+
+  template <class Sys, class Con, class T>
+  struct engine : detail::constrained_lpf_engine<Sys, Con, T, M> {
+    engine(const Sys& sys, const Con& con)
+        : detail::constrained_lpf_engine<Sys, Con, T, M>(
+              sys, con, detail::to_matrix<T, M + 1>(differentiation_weights<0, Family, M, T, Basis>()),
+              detail::to_matrix<T, M + 1>(differentiation_weights<1, Family, M, T, Basis>()),
+              detail::to_matrix<T, M + 1>(differentiation_weights<2, Family, M, T, Basis>()), nodes<Family, M, T>()) {}
+  };
+};
+
+/// Stepping interface for a constrained system: initial data are checked (or projected),
+/// every step reports failures with the step index.
+template <class Scheme, lagrangian_system Sys, class Con, class T>
+  requires holonomic_constraints<Con, Sys::dof>
+class constrained_integrator {
+ public:
+  static constexpr int n = Sys::dof;
+  static constexpr int c = Con::count;
+  using vector = vec<T, n>;
+  using state = phase_state<T, n>;
+
+  constrained_integrator(const Sys& sys, const Con& con, const T& tau, newton_options<T> opt = {})
+      : engine_(sys, con), tau_(tau), opt_(opt) {}
+
+  const T& tau() const { return tau_; }
+
+  /// The state at t = 0 from (q_0, qdot_0). Throws std::invalid_argument when q_0 is off the
+  /// constraint, or qdot_0 not tangent to it, by more than `tolerance_ulps` eps (scaled by
+  /// 1 + |q_0| and 1 + |qdot_0|); use project_initial_state to move such data onto it.
+  state initial_state(const vector& q0, const vector& qdot0, int tolerance_ulps = 64) const {
+    if (!detail::all_finite(q0) || !detail::all_finite(qdot0))
+      throw std::invalid_argument("geomint: initial state is not finite");
+    const auto g = detail::constraint_derivatives<Con, T, n>::first(engine_.constraints(), q0);
+    const T eps = std::numeric_limits<T>::epsilon();
+    const T off = g.f.template lpNorm<Eigen::Infinity>();
+    const T normal_speed = (g.G * qdot0).template lpNorm<Eigen::Infinity>();
+    const T tol_q = T(tolerance_ulps) * eps * (T(1) + q0.template lpNorm<Eigen::Infinity>());
+    const T tol_v = T(tolerance_ulps) * eps * (T(1) + qdot0.template lpNorm<Eigen::Infinity>());
+    if (off > tol_q)
+      throw std::invalid_argument("geomint: initial position violates the constraints (max |f(q0)| = " +
+                                  to_text(off) + "); use project_initial_state");
+    if (normal_speed > tol_v)
+      throw std::invalid_argument("geomint: initial velocity is not tangent to the constraints (max |G(q0) qdot0| = " +
+                                  to_text(normal_speed) + "); use project_initial_state");
+    state s;
+    s.q = q0;
+    s.p = momentum<Sys, T>(engine_.system(), q0, qdot0);
+    return s;
+  }
+
+  /// Explicit projection of initial data: q_0 moves along G^T to f = 0 (Newton, the closest
+  /// point to first order), qdot_0 is replaced by its part tangent to the constraint at the new q_0
+  /// (the momentum projection used after every step).
+  state project_initial_state(vector q0, const vector& qdot0) const {
+    using F = detail::constraint_derivatives<Con, T, n>;
+    const T eps = std::numeric_limits<T>::epsilon();
+    for (int it = 0;; ++it) {
+      const auto g = F::first(engine_.constraints(), q0);
+      if (g.f.template lpNorm<Eigen::Infinity>() <= T(4) * eps * (T(1) + q0.template lpNorm<Eigen::Infinity>())) break;
+      if (it == 50) throw std::invalid_argument("geomint: could not project q0 onto the constraints");
+      vec<T, c> y;
+      if (!detail::solve_small<T, c>(mat<T, c>(g.G * g.G.transpose()), vec<T, c>(-g.f), y))
+        throw std::invalid_argument("geomint: constraint Jacobian is singular at q0");
+      q0 += g.G.transpose() * y;
+    }
+    state s;
+    s.q = q0;
+    if (!engine_.project_momentum(q0, momentum<Sys, T>(engine_.system(), q0, qdot0), s.p))
+      throw std::invalid_argument("geomint: could not project the initial velocity");
+    return s;
+  }
+
+  step_status try_step(state& s) const {
+    step_status st;
+    st.step = s.step;
+    using std::isfinite;
+    if (!detail::is_finite(tau_) || !(tau_ > T(0))) {
+      st.reason = step_failure::invalid_step_size;
+      return st;
+    }
+    if (!detail::all_finite(s.q) || !detail::all_finite(s.p)) {
+      st.reason = step_failure::non_finite_input;
+      return st;
+    }
+    vector q1, p1;
+    st = engine_.one_step(s.q, s.p, tau_, q1, p1, opt_);
+    st.step = s.step;
+    if (!st) return st;
+    s.q = q1;
+    s.p = p1;
+    ++s.step;
+    s.t = T(s.step) * tau_;
+    return st;
+  }
+
+  void step(state& s) const {
+    const step_status st = try_step(s);
+    if (!st) throw integration_error(st);
+  }
+
+  /// The two-step form; `drop` gives the paper's printed scheme (23) for the circle.
+  vector two_step(const vector& x_prev, const vector& x_curr, endpoint_terms ends, long k = 1) const {
+    vector x_next;
+    step_status st = engine_.two_step(x_prev, x_curr, tau_, ends, x_next, opt_);
+    st.step = k;
+    if (!st) throw integration_error(st);
+    return x_next;
+  }
+
+  T energy(const state& s) const {
+    vector v;
+    if (!detail::derivatives<Sys, T>::velocity(engine_.system(), s.q, s.p, v))
+      return std::numeric_limits<T>::quiet_NaN();
+    return energy_qv<Sys, T>(engine_.system(), s.q, v);
+  }
+  T violation(const state& s) const { return constraint_violation<Con, T, n>(engine_.constraints(), s.q); }
+  /// max |G(q) qdot|: the hidden (velocity) constraint.
+  T velocity_violation(const state& s) const {
+    vector v;
+    if (!detail::derivatives<Sys, T>::velocity(engine_.system(), s.q, s.p, v))
+      return std::numeric_limits<T>::quiet_NaN();
+    const auto g = detail::constraint_derivatives<Con, T, n>::first(engine_.constraints(), s.q);
+    return T((g.G * v).template lpNorm<Eigen::Infinity>());
+  }
+
+ private:
+  static std::string to_text(const T& x) {
+    std::ostringstream os;
+    os.precision(6);
+    os << x;
+    return os.str();
+  }
+  typename Scheme::template engine<Sys, Con, T> engine_;
+  T tau_;
+  newton_options<T> opt_;
+};
+
+}  // namespace geomint

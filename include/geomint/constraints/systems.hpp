@@ -1,0 +1,147 @@
+#pragma once
+/// Constrained example systems (LPF paper, example 3.3) and the paper's printed scheme (23).
+
+#include <cmath>
+#include <string_view>
+
+#include "geomint/constraints/constraint.hpp"
+#include "geomint/lpf/newton.hpp"
+
+namespace geomint::systems {
+
+/// A free unit-mass particle in the plane, L = 1/2 |qdot|^2 (with `unit_circle`: example 3.3).
+struct free_particle_2d {
+  static constexpr int dof = 2;
+  static constexpr std::string_view name = "circle";
+  template <class S>
+  static S potential(const vec<S, 2>&) { return S(0); }
+  template <class T>
+  static mat<T, 2> mass_matrix() { return mat<T, 2>::Identity(); }
+  template <class S>
+  S operator()(const vec<S, 2>&, const vec<S, 2>& v) const { return (v[0] * v[0] + v[1] * v[1]) / S(2); }
+};
+
+/// f(q) = |q|^2 - 1.
+struct unit_circle {
+  static constexpr int count = 1;
+  template <class S>
+  vec<S, 1> operator()(const vec<S, 2>& q) const {
+    vec<S, 1> f;
+    f[0] = q[0] * q[0] + q[1] * q[1] - S(1);
+    return f;
+  }
+};
+
+/// Spherical pendulum: unit mass on a unit rod, gravity g = 1 along -z;
+/// L = 1/2 |qdot|^2 - z, f = |q|^2 - 1.
+struct spherical_pendulum {
+  static constexpr int dof = 3;
+  static constexpr std::string_view name = "spherical";
+  template <class S>
+  static S potential(const vec<S, 3>& q) { return q[2]; }
+  template <class T>
+  static mat<T, 3> mass_matrix() { return mat<T, 3>::Identity(); }
+  template <class S>
+  S operator()(const vec<S, 3>& q, const vec<S, 3>& v) const {
+    return (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) / S(2) - potential<S>(q);
+  }
+  /// The vertical angular momentum x p_y - y p_x (rotations about the z axis; Noether).
+  template <class T>
+  static T conserved(const vec<T, 3>& q, const vec<T, 3>& p) { return q[0] * p[1] - q[1] * p[0]; }
+};
+
+struct unit_sphere {
+  static constexpr int count = 1;
+  template <class S>
+  vec<S, 1> operator()(const vec<S, 3>& q) const {
+    vec<S, 1> f;
+    f[0] = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] - S(1);
+    return f;
+  }
+};
+
+/// Planar double pendulum in Cartesian coordinates q = (x1, y1, x2, y2): unit masses, unit
+/// rods, gravity 1 along -y; L = 1/2 |qdot|^2 - y1 - y2.
+struct double_pendulum_cartesian {
+  static constexpr int dof = 4;
+  static constexpr std::string_view name = "double-cartesian";
+  template <class S>
+  static S potential(const vec<S, 4>& q) { return q[1] + q[3]; }
+  template <class T>
+  static mat<T, 4> mass_matrix() { return mat<T, 4>::Identity(); }
+  template <class S>
+  S operator()(const vec<S, 4>& q, const vec<S, 4>& v) const { return v.squaredNorm() / S(2) - potential<S>(q); }
+};
+
+/// Two distance constraints: |q1|^2 = 1 and |q2 - q1|^2 = 1.
+struct double_pendulum_rods {
+  static constexpr int count = 2;
+  template <class S>
+  vec<S, 2> operator()(const vec<S, 4>& q) const {
+    vec<S, 2> f;
+    f[0] = q[0] * q[0] + q[1] * q[1] - S(1);
+    const S dx = q[2] - q[0], dy = q[3] - q[1];
+    f[1] = dx * dx + dy * dy - S(1);
+    return f;
+  }
+};
+
+/// The same double pendulum in angles (theta1, theta2) from the downward vertical:
+/// L = thetadot1^2 + 1/2 thetadot2^2 + cos(theta1 - theta2) thetadot1 thetadot2
+///     + 2 cos(theta1) + cos(theta2)   (unconstrained; a general, non-natural Lagrangian).
+struct double_pendulum_angles {
+  static constexpr int dof = 2;
+  static constexpr std::string_view name = "double-angles";
+  template <class S>
+  S operator()(const vec<S, 2>& q, const vec<S, 2>& v) const {
+    using std::cos;
+    return v[0] * v[0] + v[1] * v[1] / S(2) + cos(S(q[0] - q[1])) * v[0] * v[1] + S(2) * cos(q[0]) + cos(q[1]);
+  }
+};
+
+}  // namespace geomint::systems
+
+namespace geomint {
+
+/// The LPF paper's scheme (23), exactly as printed (m = 2, equispaced, unit circle): the
+/// residual of its two equations at (x^{k-1}, x^k, x^{k+1}),
+///   x^{k-1} + 6 x^k + x^{k+1} - 4 (x^k + x^{k+1}) / |x^k + x^{k+1}|
+///                             - 4 (x^{k-1} + x^k) / |x^{k-1} + x^k| = 0.
+/// It does not depend on tau: the multiplier of the interior node is eliminated.
+template <class S>
+vec<S, 2> paper23_residual(const vec<S, 2>& x_prev, const vec<S, 2>& x_curr, const vec<S, 2>& x_next) {
+  using std::sqrt;
+  const vec<S, 2> ahead = x_curr + x_next, behind = x_prev + x_curr;
+  const S ahead_norm = sqrt(S(ahead[0] * ahead[0] + ahead[1] * ahead[1]));
+  const S behind_norm = sqrt(S(behind[0] * behind[0] + behind[1] * behind[1]));
+  return vec<S, 2>(x_prev + S(6) * x_curr + x_next - (S(4) / ahead_norm) * ahead - (S(4) / behind_norm) * behind);
+}
+
+/// One step of scheme (23): solves its residual for x^{k+1} by Newton (Jacobian by AD), from
+/// the predictor 2 x^k - x^{k-1}. Throws integration_error with the step index on failure.
+template <class T>
+vec<T, 2> paper23_step(const vec<T, 2>& x_prev, const vec<T, 2>& x_curr, long k = 1,
+                       const newton_options<T>& opt = {}) {
+  using Dl = detail::dual<T, 2>;
+  vec<T, 2> z = T(2) * x_curr - x_prev;
+  const vec<Dl, 2> prev_d = x_prev.template cast<Dl>(), curr_d = x_curr.template cast<Dl>();
+  auto residual = [&](const vec<T, 2>& zz, vec<T, 2>& F, mat<T, 2>& J) {
+    vec<Dl, 2> next_d;
+    for (int i = 0; i < 2; ++i) next_d[i] = Dl::variable(zz[i], i);
+    const vec<Dl, 2> r = paper23_residual<Dl>(prev_d, curr_d, next_d);
+    for (int i = 0; i < 2; ++i) {
+      F[i] = r[i].v;
+      for (int j = 0; j < 2; ++j) J(i, j) = r[i].d[static_cast<std::size_t>(j)];
+    }
+  };
+  step_status st;
+  if (!detail::all_finite(x_prev) || !detail::all_finite(x_curr))
+    st.reason = step_failure::non_finite_input;
+  else
+    st = detail::newton_solve<2, T>(residual, z, opt);
+  st.step = k;
+  if (!st) throw integration_error(st);
+  return z;
+}
+
+}  // namespace geomint

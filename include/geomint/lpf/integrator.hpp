@@ -1,0 +1,135 @@
+#pragma once
+/// The common stepping interface over a scheme (lpf, midpoint_vi, trapezoidal_vi, galerkin_vi),
+/// a Lagrangian system and a scalar type.
+///
+///   geomint::integrator<geomint::lpf<4, geomint::gauss_interior>, geomint::systems::pendulum, T> I(sys, tau);
+///   auto s = I.initial_state(q0, qdot0);   // p_0 = dL/dqdot(q_0, qdot_0)
+///   I.step(s);                              // (q_k, p_k) -> (q_{k+1}, p_{k+1}); throws integration_error
+///   auto [x0, x1] = I.start(q0, qdot0);     // consistent start of the two-step form
+///   auto x2 = I.two_step(x0, x1);           // (x^{k-1}, x^k) -> x^{k+1} (eq. 11-12; schemes 16-22)
+
+#include <utility>
+
+#include "geomint/lpf/classical.hpp"
+#include "geomint/lpf/lpf.hpp"
+
+namespace geomint {
+
+/// A point of the one-step (position-momentum) form.
+template <class T, int n>
+struct phase_state {
+  long step = 0;  ///< k
+  T t = T(0);     ///< t_k = k tau (accumulated)
+  vec<T, n> q = vec<T, n>::Zero();
+  vec<T, n> p = vec<T, n>::Zero();
+};
+
+template <class Scheme, lagrangian_system Sys, class T>
+class integrator {
+ public:
+  static constexpr int n = Sys::dof;
+  using scalar = T;
+  using scheme = Scheme;
+  using system = Sys;
+  using vector = vec<T, n>;
+  using state = phase_state<T, n>;
+
+  /// tau is checked at every step (an invalid tau is reported with the step index).
+  explicit integrator(const Sys& sys = Sys{}, const T& tau = T(1) / T(10), newton_options<T> opt = {})
+      : sys_(sys), engine_(sys), tau_(tau), opt_(opt) {}
+
+  const T& tau() const { return tau_; }
+  void set_tau(const T& tau) { tau_ = tau; }
+  const Sys& system_ref() const { return sys_; }
+  newton_options<T>& options() { return opt_; }
+
+  /// The state at t = 0 from (q_0, qdot_0): p_0 = dL/dqdot.
+  state initial_state(const vector& q0, const vector& qdot0) const {
+    state s;
+    s.q = q0;
+    s.p = momentum<Sys, T>(sys_, q0, qdot0);
+    return s;
+  }
+
+  /// One step of the one-step form without throwing; on failure s is unchanged.
+  step_status try_step(state& s) const {
+    step_status st = check(s.step, s.q, s.p);
+    if (!st) return st;
+    vector q1 = vector::Zero(), p1 = vector::Zero();
+    st = engine_.one_step(s.q, s.p, tau_, q1, p1, opt_);
+    st.step = s.step;
+    if (!st) return st;
+    if (!detail::all_finite(q1) || !detail::all_finite(p1)) {
+      st.reason = step_failure::non_finite_iterate;
+      return st;
+    }
+    s.q = q1;
+    s.p = p1;
+    s.t += tau_;
+    ++s.step;
+    return st;
+  }
+  /// One step; throws integration_error (reason and step index) on failure.
+  void step(state& s) const {
+    const step_status st = try_step(s);
+    if (!st) throw integration_error(st);
+  }
+  /// `count` steps; throws on the first failure.
+  void advance(state& s, long count) const {
+    for (long i = 0; i < count; ++i) step(s);
+  }
+
+  /// The two-step form (x^{k-1}, x^k) -> x^{k+1} (eq. 3/11): the momentum at t_k from the path
+  /// on [t_{k-1}, t_k], then one step. `k` only labels errors.
+  vector two_step(const vector& x_prev, const vector& x_curr, long k = 1) const {
+    const vector p = momentum_at_end(x_prev, x_curr, k);
+    state s;
+    s.step = k;
+    s.q = x_curr;
+    s.p = p;
+    step(s);
+    return s.q;
+  }
+  /// d_2 L_d(x^{k-1}, x^k): the momentum at x^k of the path fitted on [t_{k-1}, t_k] (eq. 10).
+  vector momentum_at_end(const vector& x_prev, const vector& x_curr, long k = 1) const {
+    step_status st = check(k, x_prev, x_curr);
+    vector p = vector::Zero();
+    if (st) st = engine_.end_momentum(x_prev, x_curr, tau_, p, opt_);
+    st.step = k;
+    if (!st) throw integration_error(st);
+    return p;
+  }
+  /// Consistent start of the two-step form: x^0 = q_0 and x^1 from one step of the one-step
+  /// form with p_0 = dL/dqdot(q_0, qdot_0). Then two_step reproduces the one-step trajectory.
+  std::pair<vector, vector> start(const vector& q0, const vector& qdot0) const {
+    state s = initial_state(q0, qdot0);
+    step(s);
+    return {q0, s.q};
+  }
+
+  /// Energy qdot . dL/dqdot - L at (q, p) (inverse Legendre transform for qdot).
+  T energy(const state& s) const { return energy(s.q, s.p); }
+  T energy(const vector& q, const vector& p) const {
+    vector v;
+    if (!detail::derivatives<Sys, T>::velocity(sys_, q, p, v)) return std::numeric_limits<T>::quiet_NaN();
+    return energy_qv<Sys, T>(sys_, q, v);
+  }
+
+ private:
+  step_status check(long k, const vector& a, const vector& b) const {
+    step_status st;
+    st.step = k;
+    if (!detail::is_finite(tau_) || !(tau_ > T(0)))
+      st.reason = step_failure::invalid_step_size;
+    else if (!detail::all_finite(a) || !detail::all_finite(b))
+      st.reason = step_failure::non_finite_input;
+    return st;
+  }
+
+  Sys sys_;
+  typename Scheme::template engine<Sys, T> engine_;
+  T tau_;
+  newton_options<T> opt_;
+};
+
+}  // namespace geomint

@@ -1,0 +1,110 @@
+#pragma once
+/// Newton's method with fixed-size Eigen matrices, and the errors a step can report.
+///
+/// Convergence is declared when the Newton correction falls below a multiple of the scalar's
+/// epsilon (relative to the iterate), or when, already below eps^(2/3), it stops contracting
+/// (the round-off floor of an ill-conditioned system). Anything else is reported: a singular
+/// Jacobian, a non-finite residual or iterate, or no convergence within the iteration budget.
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "geomint/lpf/lagrangian.hpp"
+
+namespace geomint {
+
+/// Why a step failed.
+enum class step_failure {
+  none,
+  invalid_step_size,   ///< tau <= 0 or not finite
+  non_finite_input,    ///< q, p (or x^{k-1}, x^k) contain NaN or infinity
+  singular_jacobian,   ///< the Newton matrix is singular to working precision
+  non_finite_iterate,  ///< Newton produced NaN or infinity (divergence)
+  no_convergence,      ///< the iteration budget ran out
+};
+
+inline std::string_view to_string(step_failure f) {
+  switch (f) {
+    case step_failure::none: return "ok";
+    case step_failure::invalid_step_size: return "invalid step size (tau must be finite and > 0)";
+    case step_failure::non_finite_input: return "non-finite input state";
+    case step_failure::singular_jacobian: return "singular Newton Jacobian";
+    case step_failure::non_finite_iterate: return "Newton iterate became non-finite (divergence)";
+    case step_failure::no_convergence: return "Newton did not converge";
+  }
+  return "unknown";
+}
+
+/// Outcome of one step: success, or the reason and the index of the failing step.
+struct step_status {
+  step_failure reason = step_failure::none;
+  long step = 0;        ///< index k of the step k -> k+1 that was attempted
+  int iterations = 0;   ///< Newton iterations used
+  explicit operator bool() const { return reason == step_failure::none; }
+  std::string message() const {
+    return "geomint: step " + std::to_string(step) + ": " + std::string(to_string(reason)) + " (after " +
+           std::to_string(iterations) + " Newton iterations)";
+  }
+};
+
+/// Thrown by the throwing stepping functions; carries the reason and the step index.
+class integration_error : public std::runtime_error {
+ public:
+  explicit integration_error(const step_status& s) : std::runtime_error(s.message()), status_(s) {}
+  step_failure reason() const { return status_.reason; }
+  long step() const { return status_.step; }
+  const step_status& status() const { return status_; }
+
+ private:
+  step_status status_;
+};
+
+/// Newton settings. The tolerance is `tolerance_ulps` units of epsilon relative to the iterate.
+template <class T>
+struct newton_options {
+  int max_iterations = 50;
+  int tolerance_ulps = 64;
+};
+
+namespace detail {
+
+/// Solves F(z) = 0 from z. `residual(z, F, J)` fills F and J = dF/dz.
+template <int N, class T, class Fn>
+step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt) {
+  using std::abs;
+  const T eps = std::numeric_limits<T>::epsilon();
+  const T tol = T(opt.tolerance_ulps) * eps;
+  using std::cbrt;
+  const T floor_level = cbrt(eps * eps);  // eps^(2/3)
+  step_status st;
+  vec<T, N> F;
+  mat<T, N> J;
+  T previous = std::numeric_limits<T>::infinity();
+  for (int it = 1; it <= opt.max_iterations; ++it) {
+    st.iterations = it;
+    residual(z, F, J);
+    if (!all_finite(F) || !all_finite(J)) {
+      st.reason = step_failure::non_finite_iterate;
+      return st;
+    }
+    vec<T, N> dz;
+    if (!solve_small<T, N>(J, vec<T, N>(-F), dz)) {
+      st.reason = all_finite(dz) ? step_failure::singular_jacobian : step_failure::non_finite_iterate;
+      return st;
+    }
+    z += dz;
+    const T size = dz.template lpNorm<Eigen::Infinity>();
+    const T scale = T(1) + z.template lpNorm<Eigen::Infinity>();
+    if (size <= tol * scale) return st;
+    if (size <= floor_level * scale && size * T(2) > previous) return st;  // round-off floor
+    previous = size;
+  }
+  st.reason = step_failure::no_convergence;
+  return st;
+}
+
+}  // namespace detail
+}  // namespace geomint

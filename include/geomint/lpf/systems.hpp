@@ -1,0 +1,75 @@
+#pragma once
+/// Built-in Lagrangian systems (LPF paper section 3 and DESIGN.md section 1).
+
+#include <string_view>
+
+#include "geomint/lpf/lagrangian.hpp"
+
+namespace geomint::systems {
+
+/// L = 1/2 xdot^2 - 1/2 x^2 (eq. 15).
+struct harmonic {
+  static constexpr int dof = 1;
+  static constexpr std::string_view name = "harmonic";
+  template <class S>
+  static S potential(const vec<S, 1>& q) { return q[0] * q[0] / S(2); }
+  template <class T>
+  static mat<T, 1> mass_matrix() { return mat<T, 1>::Identity(); }
+  template <class S>
+  S operator()(const vec<S, 1>& q, const vec<S, 1>& v) const { return v[0] * v[0] / S(2) - potential<S>(q); }
+};
+
+/// L = 1/2 thetadot^2 - (1 - cos theta) (eq. 20).
+struct pendulum {
+  static constexpr int dof = 1;
+  static constexpr std::string_view name = "pendulum";
+  template <class S>
+  static S potential(const vec<S, 1>& q) {
+    using std::cos;
+    return S(1) - cos(q[0]);
+  }
+  template <class T>
+  static mat<T, 1> mass_matrix() { return mat<T, 1>::Identity(); }
+  template <class S>
+  S operator()(const vec<S, 1>& q, const vec<S, 1>& v) const { return v[0] * v[0] / S(2) - potential<S>(q); }
+};
+
+/// L = 1/2 |qdot|^2 + 1/|q| (planar Kepler problem, mu = 1). Rotation invariant, so the
+/// angular momentum q x p is the Noether quantity.
+struct kepler {
+  static constexpr int dof = 2;
+  static constexpr std::string_view name = "kepler";
+  template <class S>
+  static S potential(const vec<S, 2>& q) {
+    using std::sqrt;
+    return S(-1) / sqrt(q[0] * q[0] + q[1] * q[1]);
+  }
+  template <class T>
+  static mat<T, 2> mass_matrix() { return mat<T, 2>::Identity(); }
+  template <class S>
+  S operator()(const vec<S, 2>& q, const vec<S, 2>& v) const { return (v[0] * v[0] + v[1] * v[1]) / S(2) - potential<S>(q); }
+  /// q x p.
+  template <class T>
+  static T conserved(const vec<T, 2>& q, const vec<T, 2>& p) { return q[0] * p[1] - q[1] * p[0]; }
+};
+
+/// A unit charge in the plane in the axisymmetric, non-uniform magnetic field B_z = 1 + r^2,
+/// vector potential A = a(r) (-y, x) with a(r) = (1 + r^2/2)/2:
+/// L = 1/2 |qdot|^2 + A(q) . qdot (velocity-dependent, not separable). L is invariant under
+/// rotations about the origin, so the canonical angular momentum x p_y - y p_x (p = qdot + A)
+/// is conserved (Noether).
+struct charged {
+  static constexpr int dof = 2;
+  static constexpr std::string_view name = "charged";
+  template <class S>
+  S operator()(const vec<S, 2>& q, const vec<S, 2>& v) const {
+    const S r2 = q[0] * q[0] + q[1] * q[1];
+    const S a = (S(1) + r2 / S(2)) / S(2);
+    return (v[0] * v[0] + v[1] * v[1]) / S(2) + a * (q[0] * v[1] - q[1] * v[0]);
+  }
+  /// x p_y - y p_x.
+  template <class T>
+  static T conserved(const vec<T, 2>& q, const vec<T, 2>& p) { return q[0] * p[1] - q[1] * p[0]; }
+};
+
+}  // namespace geomint::systems

@@ -1,0 +1,31 @@
+#pragma once
+/// geomint-run: options and the per-(system, scalar) entry points (one translation unit each).
+#include <string>
+#include <vector>
+
+namespace geomint::run {
+
+struct options {
+  std::string system = "harmonic";
+  std::string scheme = "lpf";
+  std::string nodes = "equispaced";
+  std::string basis = "lagrange";
+  int m = 2;
+  std::string tau = "0.1";
+  long steps = 100;
+  long every = 1;
+  std::vector<std::string> q0, p0;  ///< empty: the system's default initial data
+  int digits = 16;
+  bool csv = false;
+};
+
+#define GEOMINT_RUN_DECLARE(sys, digits) int run_##sys##_##digits(const options&);
+#define GEOMINT_RUN_FOR_DIGITS(sys) GEOMINT_RUN_DECLARE(sys, 16) GEOMINT_RUN_DECLARE(sys, 50) GEOMINT_RUN_DECLARE(sys, 100)
+GEOMINT_RUN_FOR_DIGITS(harmonic)
+GEOMINT_RUN_FOR_DIGITS(pendulum)
+GEOMINT_RUN_FOR_DIGITS(kepler)
+GEOMINT_RUN_FOR_DIGITS(charged)
+#undef GEOMINT_RUN_FOR_DIGITS
+#undef GEOMINT_RUN_DECLARE
+
+}  // namespace geomint::run

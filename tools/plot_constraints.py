@@ -1,0 +1,82 @@
+#!/usr/bin/env python3
+"""Figures of the constrained studies (geomint-constraints-demo CSV) as PNG.
+
+usage: /usr/bin/python3 tools/plot_constraints.py CSV_DIR PNG_DIR
+"""
+import csv
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read(path):
+    with open(path, newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    return {key: [float(row[key]) for row in rows] for key in rows[0]}
+
+
+def floor(values):
+    """Zero cannot be drawn on a log axis: show it at the smallest positive double."""
+    return [max(v, 1e-300) for v in values]
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__, file=sys.stderr)
+        return 2
+    src, dst = sys.argv[1], sys.argv[2]
+
+    circle = read(f"{src}/circle.csv")
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    axes[0].semilogy(circle["t"], floor(circle["paper23_constraint"]), label="scheme (23) as printed")
+    axes[0].semilogy(circle["t"], floor(circle["lpf_constraint"]), label="constrained LPF, m = 2")
+    axes[0].set_xlabel("t")
+    axes[0].set_ylabel("| |q|^2 - 1 |")
+    axes[0].set_title("particle on the circle: constraint violation")
+    axes[0].legend()
+    axes[1].semilogy(circle["t"], floor(circle["paper23_energy_error"]), label="scheme (23) as printed")
+    axes[1].semilogy(circle["t"], floor(circle["lpf_energy_error"]), label="constrained LPF, m = 2")
+    axes[1].set_xlabel("t")
+    axes[1].set_ylabel("|H - H0|")
+    axes[1].set_title("energy error (tau = 0.1)")
+    axes[1].legend()
+    fig.tight_layout()
+    fig.savefig(f"{dst}/constraints_circle.png", dpi=110)
+
+    sph = read(f"{src}/spherical.csv")
+    fig = plt.figure(figsize=(11, 4))
+    ax = fig.add_subplot(1, 2, 1, projection="3d")
+    count = min(len(sph["x"]), 400)
+    ax.plot(sph["x"][:count], sph["y"][:count], sph["z"][:count], lw=0.8)
+    ax.set_title("spherical pendulum path (t <= 1000)")
+    ax2 = fig.add_subplot(1, 2, 2)
+    ax2.semilogy(sph["t"], floor(sph["energy_error"]), label="|H - H0|")
+    ax2.semilogy(sph["t"], floor(sph["momentum_error"]), label="|L_z - L_z0|")
+    ax2.semilogy(sph["t"], floor(sph["constraint"]), label="| |q|^2 - 1 |")
+    ax2.set_xlabel("t")
+    ax2.set_title("constrained LPF m = 3 Lobatto, tau = 0.05")
+    ax2.legend()
+    fig.tight_layout()
+    fig.savefig(f"{dst}/constraints_spherical.png", dpi=110)
+
+    dbl = read(f"{src}/double.csv")
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    axes[0].plot(dbl["t"], dbl["x2_cartesian"], label="x2, Cartesian + 2 rods")
+    axes[0].plot(dbl["t"], dbl["x2_angles"], "--", label="x2, angles")
+    axes[0].set_xlabel("t")
+    axes[0].set_title("double pendulum, lower bob")
+    axes[0].legend()
+    axes[1].semilogy(dbl["t"], floor(dbl["difference"]), label="distance between the two lower bobs")
+    axes[1].semilogy(dbl["t"], floor(dbl["energy_error"]), label="Cartesian |H - H0|")
+    axes[1].set_xlabel("t")
+    axes[1].legend()
+    fig.tight_layout()
+    fig.savefig(f"{dst}/constraints_double.png", dpi=110)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
