@@ -8,6 +8,8 @@
 #include <geomint/constraints/constrained_lpf.hpp>
 #include <geomint/constraints/systems.hpp>
 
+#include <vector>
+
 #include "catch.hpp"
 #include "scalar_types.hpp"
 
@@ -195,4 +197,30 @@ TEMPLATE_LIST_TEST_CASE("constrained LPF: bad input gets a clear error", "[const
   }
   s.p[0] = std::numeric_limits<T>::quiet_NaN();
   CHECK_THROWS_AS(integrator.step(s), geomint::integration_error);
+}
+
+TEST_CASE("scheme (23) as printed amplifies radial defects by 3 + 2 sqrt 2 per step", "[constraints][paper23]") {
+  // Linearising (23) about the circle, the normalisations remove the radial component r of a
+  // perturbation, leaving r_{k-1} + 6 r_k + r_{k+1} = 0: roots -3 -+ 2 sqrt(2). The dominant
+  // one, -(3 + 2 sqrt 2), is the expected ratio of successive radial defects (exact
+  // mathematics). 50 digits and tau = 1/1000 keep the defects in the linear regime: the
+  // truncation error that seeds them is O(tau^4) = 1e-12, far above round-off.
+  using T = geomint::test::cpp_bin_float_50;
+  const T tau = T(1) / T(1000);
+  vec<T, 2> prev = on_circle(T(0)), curr = on_circle(tau);
+  std::vector<T> radial;
+  for (long k = 1; k <= 10; ++k) {
+    const vec<T, 2> next = geomint::paper23_step<T>(prev, curr, k);
+    prev = curr;
+    curr = next;
+    radial.push_back(T(curr.norm() - T(1)));
+  }
+  using std::sqrt;
+  const T expected = -(T(3) + T(2) * sqrt(T(2)));
+  for (std::size_t k = 6; k < radial.size(); ++k) {
+    const T ratio = radial[k] / radial[k - 1];
+    INFO("step " << k << ": radial defect " << radial[k] << ", ratio " << ratio);
+    using std::abs;
+    CHECK(abs(T(ratio / expected - T(1))) < T(1) / T(100));
+  }
 }
