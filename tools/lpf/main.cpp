@@ -11,8 +11,8 @@
 namespace {
 
 const char* usage =
-    "usage: geomint-run [--system harmonic|pendulum|kepler|charged]\n"
-    "                   [--scheme lpf|midpoint|trapezoidal|galerkin]\n"
+    "usage: geomint-run [--system harmonic|pendulum|kepler|charged|circle|spherical]\n"
+    "                   [--scheme lpf|midpoint|trapezoidal|galerkin|paper23]\n"
     "                   [--nodes equispaced|lobatto|chebyshev|gauss-interior] [--basis lagrange|bernstein]\n"
     "                   [--m M (2..8)] [--tau T (> 0)] [--steps N] [--every K]\n"
     "                   [--q0 a[,b]] [--p0 a[,b]] [--digits 16|50|100] [--csv]\n"
@@ -22,7 +22,12 @@ const char* usage =
     "--nodes and --basis apply to lpf; galerkin (m-point Gauss-Legendre quadrature) is compiled\n"
     "in for --digits 16 only; lpf, midpoint and trapezoidal for 16, 50 and 100 digits.\n"
     "Defaults: harmonic q0=1,qdot0=1; pendulum q0=1,qdot0=0; kepler q0=(0.5,0),qdot0=(0,sqrt 3);\n"
-    "charged q0=(1,0),qdot0=(0,1); scheme lpf, equispaced, lagrange, m=2, tau=0.1, steps=100.\n";
+    "charged q0=(1,0),qdot0=(0,1); scheme lpf, equispaced, lagrange, m=2, tau=0.1, steps=100.\n"
+    "Constrained systems: circle (L = 1/2|qdot|^2, f = |q|^2 - 1; q0=(1,0), p0=(0,1)) with --scheme\n"
+    "lpf (the constrained integrator: f = 0 at every node and step, projected momenta) or paper23\n"
+    "(the paper's scheme (23) as printed); spherical (unit spherical pendulum, f = |q|^2 - 1;\n"
+    "q0=(sin,0,-cos)(pi/4), p0=(0,0.8,0)) with --scheme lpf. Their CSV adds a constraint column,\n"
+    "max |f_l(q)|; initial data off the constraint or with a normal velocity are rejected.\n";
 
 int fail(const std::string& why) {
   std::cerr << "geomint-run: " << why << "\n" << usage;
@@ -50,8 +55,8 @@ int main(int argc, char** argv) {
   using geomint::run::options;
   options o;
   const std::map<std::string, std::set<std::string>> choices = {
-      {"--system", {"harmonic", "pendulum", "kepler", "charged"}},
-      {"--scheme", {"lpf", "midpoint", "trapezoidal", "galerkin"}},
+      {"--system", {"harmonic", "pendulum", "kepler", "charged", "circle", "spherical"}},
+      {"--scheme", {"lpf", "midpoint", "trapezoidal", "galerkin", "paper23"}},
       {"--nodes", {"equispaced", "lobatto", "chebyshev", "gauss-interior"}},
       {"--basis", {"lagrange", "bernstein"}},
       {"--digits", {"16", "50", "100"}}};
@@ -104,6 +109,8 @@ int main(int argc, char** argv) {
     GEOMINT_RUN_DISPATCH(pendulum)
     GEOMINT_RUN_DISPATCH(kepler)
     GEOMINT_RUN_DISPATCH(charged)
+    GEOMINT_RUN_DISPATCH(circle)
+    GEOMINT_RUN_DISPATCH(spherical)
 #undef GEOMINT_RUN_DISPATCH
   } catch (const std::invalid_argument& e) {
     return fail(e.what());

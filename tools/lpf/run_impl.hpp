@@ -167,6 +167,7 @@ int run_scheme(const options& o, const Sys& sys) {
 template <class Sys, class T, bool WithGalerkin>
 int run_system(const options& o) {
   const Sys sys{};
+  if (o.scheme == "paper23") throw std::invalid_argument("--scheme paper23 is the paper's scheme for --system circle only");
   if (o.scheme == "midpoint") return run_scheme<midpoint_vi, Sys, T>(o, sys);
   if (o.scheme == "trapezoidal") return run_scheme<trapezoidal_vi, Sys, T>(o, sys);
   if (o.scheme == "galerkin") {

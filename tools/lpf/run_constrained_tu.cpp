@@ -1,0 +1,33 @@
+/// One (constrained system, digits) entry point of geomint-run (see CMakeLists.txt).
+#include "run_constrained.hpp"
+
+#if !defined(GEOMINT_RUN_SYSTEM) || !defined(GEOMINT_RUN_DIGITS)
+#error "define GEOMINT_RUN_SYSTEM and GEOMINT_RUN_DIGITS"
+#endif
+
+namespace geomint::run {
+namespace {
+#if GEOMINT_RUN_DIGITS == 16
+using scalar = double;
+#elif GEOMINT_RUN_DIGITS == 50
+using scalar = boost::multiprecision::cpp_bin_float_50;
+#else
+using scalar = boost::multiprecision::cpp_bin_float_100;
+#endif
+struct circle {
+  using system = systems::free_particle_2d;
+  using constraints = systems::unit_circle;
+};
+struct spherical {
+  using system = systems::spherical_pendulum;
+  using constraints = systems::unit_sphere;
+};
+}  // namespace
+
+#define GEOMINT_RUN_CAT2(a, b, c) run_##a##_##c
+#define GEOMINT_RUN_CAT(a, c) GEOMINT_RUN_CAT2(a, _, c)
+int GEOMINT_RUN_CAT(GEOMINT_RUN_SYSTEM, GEOMINT_RUN_DIGITS)(const options& o) {
+  using choice = GEOMINT_RUN_SYSTEM;
+  return run_constrained_system<choice::system, choice::constraints, scalar>(o);
+}
+}  // namespace geomint::run
