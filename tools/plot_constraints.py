@@ -18,9 +18,12 @@ def read(path):
     return {key: [float(row[key]) for row in rows] for key in rows[0]}
 
 
+FLOOR = 1e-18
+
+
 def floor(values):
-    """Zero cannot be drawn on a log axis: show it at the smallest positive double."""
-    return [max(v, 1e-300) for v in values]
+    """Zero cannot be drawn on a log axis: exact zeros are drawn at FLOOR (below double eps)."""
+    return [max(v, FLOOR) for v in values]
 
 
 def main():
@@ -32,15 +35,16 @@ def main():
     circle = read(f"{src}/circle.csv")
     paper23 = read(f"{src}/circle_paper23.csv")
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
-    axes[0].semilogy(circle["t"], floor(circle["lpf_constraint"]), label="| |q|^2 - 1 |")
+    axes[0].semilogy(circle["t"], floor(circle["lpf_constraint"]), ".", ms=1, label="| |q|^2 - 1 |")
     axes[0].semilogy(circle["t"], floor(circle["lpf_energy_error"]), label="|H - H0|")
     axes[0].set_xlabel("t")
-    axes[0].set_title("constrained LPF (m = 2), tau = 0.1")
+    axes[0].set_title("constrained LPF (m = 2), tau = 0.1 (zeros drawn at 1e-18)")
     axes[0].legend()
     axes[1].semilogy(paper23["step"], floor(paper23["paper23_constraint"]), "o-", ms=3, label="| |x^k|^2 - 1 |")
     axes[1].semilogy(paper23["step"], floor(paper23["paper23_energy_error"]), "s-", ms=3, label="|H - H0|")
     axes[1].set_xlabel("step k")
-    axes[1].set_title("scheme (23) as printed (double): leaves the circle")
+    axes[1].axhline(1e-3, color="gray", lw=0.5)
+    axes[1].set_title("scheme (23) as printed: defect x 5.83 per step")
     axes[1].legend()
     fig.tight_layout()
     fig.savefig(f"{dst}/constraints_circle.png", dpi=110)

@@ -51,22 +51,29 @@ long paper23_escape_step(long steps, std::ofstream* csv) {
   using std::sin;
   vec<T_, 2> prev(T_(1), T_(0)), curr(T_(cos(tau)), T_(sin(tau)));
   const T_ threshold = T_(1) / T_(1000);
+  long escape = -1;
   for (long k = 1; k <= steps; ++k) {
-    const vec<T_, 2> next = geomint::paper23_step<T_>(prev, curr, k);
+    vec<T_, 2> next;
+    try {
+      next = geomint::paper23_step<T_>(prev, curr, k);
+    } catch (const geomint::integration_error&) {
+      break;  // Newton fails once the iterates are far off the circle; the escape is recorded
+    }
     prev = curr;
     curr = next;
     using std::abs;
     const T_ violation = abs(T_(curr.squaredNorm() - T_(1)));
-    if (csv) {
+    if (csv && violation <= T_(1)) {
       // The scheme's own velocity at t_k: the fitted parabola's slope (x^{k-1} - 4 eta + 3 x^k)/tau
       // with eta = (x^{k-1} + x^k)/|x^{k-1} + x^k| (section 3.1 and example 3.3).
       const vec<T_, 2> eta = (prev + curr).normalized();
       const vec<T_, 2> velocity = (prev - T_(4) * eta + T_(3) * curr) / tau;
       *csv << k + 1 << ',' << T_(k + 1) * tau << ',' << violation << ',' << abs(T_(velocity.squaredNorm() / T_(2) - T_(1) / T_(2))) << "\n";
     }
-    if (violation > threshold) return k + 1;
+    if (violation > threshold && escape < 0) escape = k + 1;
+    if (violation > T_(1)) break;  // far off the circle: the CSV has shown the growth
   }
-  return -1;
+  return escape;
 }
 
 void circle_study(const std::string& dir, long steps) {
