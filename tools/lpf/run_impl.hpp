@@ -164,26 +164,21 @@ int run_scheme(const options& o, const Sys& sys) {
 }
 
 /// m = 2..8 compiled in (the caller has checked the range).
-template <class Sys, class T, bool WithGalerkin>
+template <class Sys, class T>
 int run_system(const options& o) {
   const Sys sys{};
   if (o.scheme == "paper23") throw std::invalid_argument("--scheme paper23 is the paper's scheme for --system circle only");
   if (o.scheme == "midpoint") return run_scheme<midpoint_vi, Sys, T>(o, sys);
   if (o.scheme == "trapezoidal") return run_scheme<trapezoidal_vi, Sys, T>(o, sys);
   if (o.scheme == "galerkin") {
-    if constexpr (WithGalerkin) {
-      switch (o.m) {
-        case 2: return run_scheme<galerkin_vi<2>, Sys, T>(o, sys);
-        case 3: return run_scheme<galerkin_vi<3>, Sys, T>(o, sys);
-        case 4: return run_scheme<galerkin_vi<4>, Sys, T>(o, sys);
-        case 5: return run_scheme<galerkin_vi<5>, Sys, T>(o, sys);
-        case 6: return run_scheme<galerkin_vi<6>, Sys, T>(o, sys);
-        case 7: return run_scheme<galerkin_vi<7>, Sys, T>(o, sys);
-        default: return run_scheme<galerkin_vi<8>, Sys, T>(o, sys);
-      }
-    } else {
-      std::cerr << "geomint-run: --scheme galerkin is compiled in for --digits 16 only (build time)\n";
-      return 2;
+    switch (o.m) {
+      case 2: return run_scheme<galerkin_vi<2>, Sys, T>(o, sys);
+      case 3: return run_scheme<galerkin_vi<3>, Sys, T>(o, sys);
+      case 4: return run_scheme<galerkin_vi<4>, Sys, T>(o, sys);
+      case 5: return run_scheme<galerkin_vi<5>, Sys, T>(o, sys);
+      case 6: return run_scheme<galerkin_vi<6>, Sys, T>(o, sys);
+      case 7: return run_scheme<galerkin_vi<7>, Sys, T>(o, sys);
+      default: return run_scheme<galerkin_vi<8>, Sys, T>(o, sys);
     }
   }
   switch (o.m) {

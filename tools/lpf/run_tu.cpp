@@ -27,20 +27,17 @@ namespace geomint::run {
 namespace {
 #if GEOMINT_RUN_DIGITS == 16
 using scalar = double;
-constexpr bool with_galerkin = true;
 #elif GEOMINT_RUN_DIGITS == 50
 using scalar = boost::multiprecision::cpp_bin_float_50;
-constexpr bool with_galerkin = false;  // compile time: Galerkin in multiprecision is left to the tests
 #else
 using scalar = boost::multiprecision::cpp_bin_float_100;
-constexpr bool with_galerkin = false;
 #endif
 }  // namespace
 
 #define GEOMINT_RUN_CAT2(a, b, c) run_##a##_##c
 #define GEOMINT_RUN_CAT(a, c) GEOMINT_RUN_CAT2(a, _, c)
 int GEOMINT_RUN_CAT(GEOMINT_RUN_SYSTEM, GEOMINT_RUN_DIGITS)(const options& o) {
-  return run_system<systems::GEOMINT_RUN_SYSTEM, scalar, with_galerkin>(o);
+  return run_system<systems::GEOMINT_RUN_SYSTEM, scalar>(o);
 }
 }  // namespace geomint::run
 #endif
