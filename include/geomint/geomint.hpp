@@ -19,3 +19,4 @@
 #include "geomint/constraints/constraint.hpp"
 #include "geomint/constraints/constrained_lpf.hpp"
 #include "geomint/constraints/systems.hpp"
+#include "geomint/analysis/exact_scheme.hpp"

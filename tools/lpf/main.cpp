@@ -105,10 +105,11 @@ int main(int argc, char** argv) {
     if (o.digits == 50) return run_##sys##_50(o);            \
     return run_##sys##_100(o);                               \
   }
-    GEOMINT_RUN_DISPATCH(harmonic)
-    GEOMINT_RUN_DISPATCH(pendulum)
-    GEOMINT_RUN_DISPATCH(kepler)
-    GEOMINT_RUN_DISPATCH(charged)
+    if (o.system == "harmonic" || o.system == "pendulum" || o.system == "kepler" || o.system == "charged") {
+      if (o.digits == 16) return run_free_16(o);
+      if (o.digits == 50) return run_free_50(o);
+      return run_free_100(o);
+    }
     GEOMINT_RUN_DISPATCH(circle)
     GEOMINT_RUN_DISPATCH(spherical)
 #undef GEOMINT_RUN_DISPATCH

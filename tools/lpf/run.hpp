@@ -1,5 +1,6 @@
 #pragma once
-/// geomint-run: options and the per-(system, scalar) entry points (one translation unit each).
+/// geomint-run: options and the entry points per scalar (free systems) and per (constrained
+/// system, scalar) (one translation unit each).
 #include <string>
 #include <vector>
 
@@ -21,10 +22,7 @@ struct options {
 
 #define GEOMINT_RUN_DECLARE(sys, digits) int run_##sys##_##digits(const options&);
 #define GEOMINT_RUN_FOR_DIGITS(sys) GEOMINT_RUN_DECLARE(sys, 16) GEOMINT_RUN_DECLARE(sys, 50) GEOMINT_RUN_DECLARE(sys, 100)
-GEOMINT_RUN_FOR_DIGITS(harmonic)
-GEOMINT_RUN_FOR_DIGITS(pendulum)
-GEOMINT_RUN_FOR_DIGITS(kepler)
-GEOMINT_RUN_FOR_DIGITS(charged)
+GEOMINT_RUN_FOR_DIGITS(free)  // harmonic, pendulum, kepler, charged (run_free.cpp)
 GEOMINT_RUN_FOR_DIGITS(circle)
 GEOMINT_RUN_FOR_DIGITS(spherical)
 #undef GEOMINT_RUN_FOR_DIGITS

@@ -1,0 +1,173 @@
+#pragma once
+/// Reference flows for the order studies: the exact flow of the built-in free systems by an
+/// adaptive Taylor series method in any scalar type.
+///
+/// Independence: the accelerations are written here in closed form (not through the Lagrangian
+/// and the automatic differentiation used by the integrators):
+/// - harmonic: a = -q;
+/// - pendulum: a = -sin q;
+/// - kepler:   a = -q |q|^-3;
+/// - charged:  a = B(r) (v_y, -v_x) with B = 1 + r^2, the Lorentz force of B = curl A
+///   (systems.hpp: A = a(r) (-y, x), a = (1 + r^2/2)/2).
+/// Taylor coefficients follow from the usual recurrences (Cauchy products; sin/cos pairs;
+/// u^alpha: u_0 k w_k = sum_{j=1..k} ((alpha + 1) j - k) u_j w_{k-j}); the order N is about
+/// -ln(eps)/2 and the step h = min_j (eps/|z_j|)^(1/j) / 2 over the last two coefficients
+/// (Jorba & Zou 2005), so every step is accurate to about eps of the scalar type.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+#include "geomint/lpf/lagrangian.hpp"
+#include "geomint/lpf/systems.hpp"
+
+namespace geomint::analysis {
+
+template <class Sys>
+inline constexpr bool has_reference_flow =
+    std::is_same_v<Sys, systems::harmonic> || std::is_same_v<Sys, systems::pendulum> ||
+    std::is_same_v<Sys, systems::kepler> || std::is_same_v<Sys, systems::charged>;
+
+namespace detail {
+
+/// sum_{j=0..k} a_j b_{k-j}.
+template <class T>
+T cauchy(const std::vector<T>& a, const std::vector<T>& b, std::size_t k) {
+  T out(0);
+  for (std::size_t j = 0; j <= k; ++j) out += a[j] * b[k - j];
+  return out;
+}
+
+/// Taylor coefficients q_0..q_N, v_0..v_N of the solution of qddot = a(q, qdot) through
+/// (q_0, v_0), for the system's closed-form acceleration.
+template <class Sys, class T>
+void taylor_coefficients(const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0, std::size_t N,
+                         std::vector<vec<T, Sys::dof>>& q, std::vector<vec<T, Sys::dof>>& v) {
+  static_assert(has_reference_flow<Sys>, "geomint::analysis: no closed-form reference flow for this system");
+  constexpr int n = Sys::dof;
+  using V = vec<T, n>;
+  q.assign(N + 1, V::Zero());
+  v.assign(N + 1, V::Zero());
+  q[0] = q0;
+  v[0] = v0;
+  // Auxiliary series: pendulum sin/cos q; kepler and charged r^2 = x^2 + y^2 and w = r^-3.
+  std::vector<T> s(N + 1), c(N + 1), x(N + 1), y(N + 1), vx(N + 1), vy(N + 1), r2(N + 1), w(N + 1);
+  for (std::size_t k = 0; k < N; ++k) {
+    V a;
+    if constexpr (std::is_same_v<Sys, systems::harmonic>) {
+      a = -q[k];
+    } else if constexpr (std::is_same_v<Sys, systems::pendulum>) {
+      using std::cos;
+      using std::sin;
+      if (k == 0) {
+        s[0] = sin(q[0][0]);
+        c[0] = cos(q[0][0]);
+      } else {
+        T ss(0), cc(0);
+        for (std::size_t j = 1; j <= k; ++j) {
+          ss += T(static_cast<long>(j)) * q[j][0] * c[k - j];
+          cc += T(static_cast<long>(j)) * q[j][0] * s[k - j];
+        }
+        s[k] = ss / T(static_cast<long>(k));
+        c[k] = -cc / T(static_cast<long>(k));
+      }
+      a[0] = -s[k];
+    } else {
+      x[k] = q[k][0];
+      y[k] = q[k][1];
+      vx[k] = v[k][0];
+      vy[k] = v[k][1];
+      r2[k] = cauchy(x, x, k) + cauchy(y, y, k);
+      if constexpr (std::is_same_v<Sys, systems::kepler>) {
+        if (k == 0) {
+          using std::sqrt;
+          w[0] = T(1) / (r2[0] * sqrt(r2[0]));
+        } else {
+          // w = u^alpha with u = r^2, alpha = -3/2: (alpha + 1) j - k = -(j + 2k)/2.
+          T sum(0);
+          for (std::size_t j = 1; j <= k; ++j) sum -= T(static_cast<long>(j + 2 * k)) * r2[j] * w[k - j];
+          w[k] = sum / (T(2) * T(static_cast<long>(k)) * r2[0]);
+        }
+        a[0] = -cauchy(x, w, k);
+        a[1] = -cauchy(y, w, k);
+      } else {
+        // B = 1 + r^2; a = B (v_y, -v_x).
+        w[k] = r2[k] + (k == 0 ? T(1) : T(0));
+        a[0] = cauchy(w, vy, k);
+        a[1] = -cauchy(w, vx, k);
+      }
+    }
+    const T next = T(static_cast<long>(k + 1));
+    v[k + 1] = a / next;
+    q[k + 1] = v[k] / next;
+  }
+}
+
+}  // namespace detail
+
+/// The exact flow of Sys in the scalar T (q, qdot and p = dL/dqdot), to about eps of T.
+template <class Sys, class T>
+class reference_flow {
+ public:
+  static constexpr int n = Sys::dof;
+  using V = vec<T, n>;
+
+  /// Starts at (q0, p0); the velocity is recovered from p0 (inverse Legendre transform).
+  reference_flow(const V& q0, const V& p0, const Sys& sys = Sys{}) : sys_(sys), q_(q0) {
+    if (!geomint::detail::all_finite(q0) || !geomint::detail::all_finite(p0))
+      throw std::invalid_argument("geomint::reference_flow: non-finite initial state");
+    if (!geomint::detail::derivatives<Sys, T>::velocity(sys_, q0, p0, v_))
+      throw std::invalid_argument("geomint::reference_flow: cannot recover the velocity from p0");
+    using std::log;
+    order_ = std::max<std::size_t>(8, static_cast<std::size_t>(-log(std::numeric_limits<T>::epsilon()) / T(2)) + 2);
+  }
+
+  const T& time() const { return t_; }
+  const V& q() const { return q_; }
+  const V& qdot() const { return v_; }
+  V p() const { return momentum<Sys, T>(sys_, q_, v_); }
+  long steps() const { return steps_; }
+
+  /// Advances to t_end >= time().
+  void advance_to(const T& t_end) {
+    if (!geomint::detail::is_finite(t_end) || t_end < t_) throw std::invalid_argument("geomint::reference_flow: bad end time");
+    using std::abs;
+    using std::pow;
+    const T eps = std::numeric_limits<T>::epsilon();
+    while (t_ < t_end) {
+      detail::taylor_coefficients<Sys, T>(q_, v_, order_, qc_, vc_);
+      T h = std::numeric_limits<T>::infinity();
+      for (std::size_t j : {order_ - 1, order_}) {
+        const T size = std::max(qc_[j].template lpNorm<Eigen::Infinity>(), vc_[j].template lpNorm<Eigen::Infinity>());
+        if (size > T(0)) h = std::min(h, pow(eps / size, T(1) / T(static_cast<long>(j))));
+      }
+      h /= T(2);
+      const bool last = !(t_ + h < t_end);
+      if (last) h = t_end - t_;
+      V qn = qc_[order_], vn = vc_[order_];
+      for (std::size_t j = order_; j-- > 0;) {
+        qn = qn * h + qc_[j];
+        vn = vn * h + vc_[j];
+      }
+      if (!geomint::detail::all_finite(qn) || !geomint::detail::all_finite(vn))
+        throw std::runtime_error("geomint::reference_flow: the Taylor series diverged");
+      q_ = qn;
+      v_ = vn;
+      t_ = last ? t_end : t_ + h;
+      ++steps_;
+    }
+  }
+
+ private:
+  Sys sys_;
+  V q_, v_;
+  T t_ = T(0);
+  std::size_t order_;
+  long steps_ = 0;
+  std::vector<V> qc_, vc_;
+};
+
+}  // namespace geomint::analysis

@@ -1,0 +1,148 @@
+/// Short versions of the order and symplecticity studies (the full tables: geomint-order and
+/// geomint-symplectic, README "What the schemes really are").
+#include <memory>
+
+#include "catch.hpp"
+#include "geomint/analysis/order_study.hpp"
+#include "geomint/analysis/reference_flow.hpp"
+#include "geomint/analysis/symplecticity.hpp"
+#include "geomint/lpf/integrator.hpp"
+#include "scalar_types.hpp"
+
+using namespace geomint;
+using T = boost::multiprecision::cpp_bin_float_50;
+using Pendulum = systems::pendulum;
+
+namespace {
+
+/// The one-step map of integrator<Scheme, Sys, T> in the form of the studies.
+template <class Scheme, class Sys>
+analysis::step_function<T> step_of(const integrator<Scheme, Sys, T>& I) {
+  auto stepper = std::make_shared<integrator<Scheme, Sys, T>>(I);
+  return [stepper](const analysis::dynamic_vector<T>& q, const analysis::dynamic_vector<T>& p, const T& tau,
+              analysis::dynamic_vector<T>& q1, analysis::dynamic_vector<T>& p1) {
+    typename integrator<Scheme, Sys, T>::state s;
+    s.q = q;
+    s.p = p;
+    stepper->set_tau(tau);
+    if (!stepper->try_step(s)) return false;
+    q1 = s.q;
+    p1 = s.p;
+    return true;
+  };
+}
+
+/// Observed global order of Scheme on the pendulum from theta = 1 at rest, T = 1, N = 8..64,
+/// against the Taylor reference flow in 100 digits.
+template <class Scheme>
+analysis::order_result<T> pendulum_orders(const std::vector<long>& counts) {
+  using R = boost::multiprecision::cpp_bin_float_100;
+  const integrator<Scheme, Pendulum, T> I;
+  analysis::step_function<T> step = step_of(I);
+  analysis::reference_function<T> reference = [](const T& t, analysis::dynamic_vector<T>& q,
+                                                 analysis::dynamic_vector<T>& p) {
+    analysis::reference_flow<Pendulum, R> flow(vec<R, 1>(R(1)), vec<R, 1>(R(0)));
+    flow.advance_to(R(t));
+    q = analysis::dynamic_vector<T>::Constant(1, T(flow.q()[0]));
+    p = analysis::dynamic_vector<T>::Constant(1, T(flow.p()[0]));
+  };
+  const analysis::dynamic_vector<T> q0 = analysis::dynamic_vector<T>::Constant(1, T(1)),
+                                    p0 = analysis::dynamic_vector<T>::Constant(1, T(0));
+  return analysis::order_study<T>(step, reference, q0, p0, T(1), counts);
+}
+
+template <class Scheme>
+void check_orders(int expected_global) {
+  const auto r = pendulum_orders<Scheme>({8, 16, 32});
+  INFO(Scheme::name() << ": local " << r.local_order << ", global " << r.global_order);
+  REQUIRE(r.ok);
+  using std::abs;
+  // Observed slopes within 0.25 of the integers: the asymptotic regime at tau = 1/32.
+  CHECK(abs(r.global_order - T(expected_global)) < T(1) / T(4));
+  CHECK(abs(r.local_order - T(expected_global + 1)) < T(1) / T(4));
+}
+
+/// The symplecticity defect of Scheme's one-step map on the pendulum at (q, p) = (1, 1/2), tau = 1/4.
+template <class Scheme>
+T pendulum_defect() {
+  const integrator<Scheme, Pendulum, T> I(Pendulum{}, T(1) / T(4));
+  analysis::phase_map<T> map = [&I](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
+    typename integrator<Scheme, Pendulum, T>::state s;
+    s.q[0] = z[0];
+    s.p[0] = z[1];
+    if (!I.try_step(s)) return false;
+    z1.resize(2);
+    z1 << s.q[0], s.p[0];
+    return true;
+  };
+  analysis::phase_vector<T> z0(2);
+  z0 << T(1), T(1) / T(2);
+  return analysis::symplectic_defect<T>(analysis::one_step_jacobian<T>(map, z0));
+}
+
+}  // namespace
+
+TEST_CASE("symplectic defect of known matrices", "[analysis][symplectic]") {
+  // Exact mathematics: rotations and shears are symplectic; diag(2, 1) has J^T Omega J = 2 Omega.
+  using std::cos;
+  using std::sin;
+  analysis::phase_matrix<T> rotation(2, 2), stretch(2, 2), shear4(4, 4);
+  const T c = cos(T(3) / T(10)), s = sin(T(3) / T(10));
+  rotation << c, s, -s, c;
+  stretch << T(2), T(0), T(0), T(1);
+  shear4.setIdentity();
+  shear4.block(2, 0, 2, 2) << T(3), T(1), T(1), T(5);  // p += S q with S symmetric
+  CHECK(analysis::symplectic_defect<T>(rotation) <= geomint::test::eps_tol<T>(8));
+  CHECK(analysis::symplectic_defect<T>(shear4) == T(0));
+  CHECK(analysis::symplectic_defect<T>(stretch) == T(1));
+  // The difference Jacobian of a linear map is the matrix itself (to round-off over delta).
+  analysis::phase_map<T> linear = [&](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
+    z1 = shear4 * z;
+    return true;
+  };
+  analysis::phase_vector<T> z(4);
+  z << T(1), T(2), T(3), T(4);
+  using std::pow;
+  const T J_error = (analysis::one_step_jacobian<T>(linear, z) - shear4).cwiseAbs().maxCoeff();
+  CHECK(J_error <= T(64) * pow(std::numeric_limits<T>::epsilon(), T(4) / T(5)));
+}
+
+TEST_CASE("variational schemes are symplectic to working precision; LPF on equispaced m = 3 is not",
+          "[analysis][symplectic]") {
+  using std::pow;
+  // The difference Jacobian is accurate to about eps^(4/5) (1e-40 in 50 digits).
+  const T floor_level = T(1024) * pow(std::numeric_limits<T>::epsilon(), T(4) / T(5));
+  const T midpoint = pendulum_defect<midpoint_vi>(), trapezoidal = pendulum_defect<trapezoidal_vi>(),
+          galerkin = pendulum_defect<galerkin_vi<3>>(), lpf_m2 = pendulum_defect<lpf<2, equispaced>>(),
+          lpf_m3 = pendulum_defect<lpf<3, equispaced>>();
+  INFO("midpoint " << midpoint << ", trapezoidal " << trapezoidal << ", galerkin(3) " << galerkin << ", lpf(2) "
+                   << lpf_m2 << ", lpf(3, equispaced) " << lpf_m3);
+  CHECK(midpoint <= floor_level);
+  CHECK(trapezoidal <= floor_level);
+  CHECK(galerkin <= floor_level);
+  CHECK(lpf_m2 <= floor_level);
+  // A non-variational map stands out by many orders of magnitude.
+  CHECK(lpf_m3 > pow(std::numeric_limits<T>::epsilon(), T(1) / T(5)));
+}
+
+TEST_CASE("observed orders on the pendulum", "[analysis][order]") {
+  check_orders<midpoint_vi>(2);
+  check_orders<galerkin_vi<2>>(4);
+  check_orders<lpf<2, equispaced>>(2);
+}
+
+TEST_CASE("energy behaviour: slope and maximum", "[analysis][symplectic]") {
+  // Exact mathematics: a map that adds tau to the "energy" z[0] each step drifts with slope 1.
+  analysis::phase_map<T> drift = [](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
+    z1 = z;
+    z1[0] += T(1) / T(4);
+    return true;
+  };
+  analysis::phase_vector<T> z0 = analysis::phase_vector<T>::Zero(2);
+  const auto r = analysis::energy_behaviour<T>(drift, [](const analysis::phase_vector<T>& z) { return z[0]; }, z0,
+                                               T(1) / T(4), 40);
+  CHECK(r.ok);
+  CHECK(r.steps == 40);
+  CHECK(geomint::test::abs_diff(r.max_error, T(10)) <= geomint::test::eps_tol<T>(16));
+  CHECK(geomint::test::abs_diff(r.drift, T(1)) <= geomint::test::eps_tol<T>(64));
+}

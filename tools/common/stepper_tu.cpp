@@ -1,0 +1,19 @@
+/// One (system, digits) instantiation of the stepper factory (see CMakeLists.txt).
+#include "stepper_impl.hpp"
+
+#if !defined(GEOMINT_STEPPER_SYSTEM) || !defined(GEOMINT_STEPPER_DIGITS)
+#error "define GEOMINT_STEPPER_SYSTEM and GEOMINT_STEPPER_DIGITS"
+#endif
+
+namespace geomint::tools {
+namespace {
+#if GEOMINT_STEPPER_DIGITS == 16
+using scalar = double;
+#elif GEOMINT_STEPPER_DIGITS == 50
+using scalar = boost::multiprecision::cpp_bin_float_50;
+#else
+using scalar = boost::multiprecision::cpp_bin_float_100;
+#endif
+}  // namespace
+template std::unique_ptr<stepper<scalar>> make_system_stepper<systems::GEOMINT_STEPPER_SYSTEM, scalar>(const scheme_spec&);
+}  // namespace geomint::tools

@@ -1,0 +1,207 @@
+/// geomint-order: observed local and global orders and error constants of the schemes on the
+/// nonlinear systems, in multiprecision arithmetic against an independent Taylor-series flow.
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "geomint/analysis/order_study.hpp"
+#include "geomint/analysis/reference_flow.hpp"
+#include "study_cli.hpp"
+
+namespace {
+
+using namespace geomint;
+using boost::multiprecision::cpp_bin_float_100;
+using boost::multiprecision::cpp_bin_float_50;
+using boost::multiprecision::number;
+using boost::multiprecision::backends::cpp_bin_float;
+
+const char* usage =
+    "usage: geomint-order [--system S[,S...]|all] [--scheme S[,S...]|all] [--nodes F[,F...]|all]\n"
+    "                     [--m M|A..B (2..8)] [--digits 50|100] [--steps N1,N2,... ] [--t-end T]\n"
+    "                     [--threads K] [--csv]\n"
+    "Local error (one step) and global error (at t = T) of each scheme against the exact flow, for\n"
+    "tau = T/N over the ladder N1 < N2 < ... (default T = 1, N = 8,16,32,64), in --digits digit\n"
+    "arithmetic; the reference flow is an adaptive Taylor series method with closed-form\n"
+    "accelerations in twice the working digits (50 -> 100, 100 -> 150).\n"
+    "Reports the observed orders between the two finest steps (local_order = exponent of the local\n"
+    "error, p + 1; global_order = p) and the error constant C = global error / tau^round(p).\n"
+    "  systems: harmonic, pendulum, kepler, charged (all); initial data as geomint-run\n"
+    "  schemes: lpf, midpoint, trapezoidal, galerkin (all)\n"
+    "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n"
+    "CSV header: system,scheme,nodes,m,local_order,global_order,error_constant\n"
+    "(m and nodes are '-' where a scheme has none).\n";
+
+template <class T>
+std::string fixed2(const T& v) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << static_cast<double>(v);
+  return out.str();
+}
+template <class T>
+std::string sci3(const T& v) {
+  std::ostringstream out;
+  out << std::scientific << std::setprecision(2) << static_cast<double>(v);
+  return out.str();
+}
+
+/// The reference states at t_end / N (and t_end), computed once per system in the scalar R.
+template <class Sys, class T, class R>
+std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T>>> reference_states(
+    const T& t_end, const std::vector<long>& counts) {
+  constexpr int n = Sys::dof;
+  auto [q0t, qdot0t] = tools::default_initial_data<T>(Sys::name);
+  vec<R, n> q0, qdot0;
+  for (int i = 0; i < n; ++i) {
+    q0[i] = R(q0t[i]);
+    qdot0[i] = R(qdot0t[i]);
+  }
+  // Start from exactly the working-precision data the schemes start from.
+  const vec<R, n> p0 = momentum<Sys, R>(Sys{}, q0, qdot0);
+  std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T>>> out;
+  auto store = [&](long key, const R& t) {
+    analysis::reference_flow<Sys, R> flow(q0, p0);
+    flow.advance_to(t);
+    analysis::dynamic_vector<T> q(n), p(n);
+    const vec<R, n> pr = flow.p();
+    for (int i = 0; i < n; ++i) {
+      q[i] = T(flow.q()[i]);
+      p[i] = T(pr[i]);
+    }
+    out[key] = {q, p};
+  };
+  store(0, R(t_end));
+  for (long N : counts) store(N, R(t_end) / R(N));
+  return out;
+}
+
+template <class T, class R>
+int run(const geomint::studies::selection& sel, const T& t_end, const std::vector<long>& counts) {
+  const auto cases = sel.cases();
+  // Reference states per system (key 0: t_end; key N: t_end / N).
+  std::map<std::string, std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T>>>> refs;
+  for (const std::string& system : sel.systems) {
+    if (system == "harmonic") refs[system] = reference_states<systems::harmonic, T, R>(t_end, counts);
+    if (system == "pendulum") refs[system] = reference_states<systems::pendulum, T, R>(t_end, counts);
+    if (system == "kepler") refs[system] = reference_states<systems::kepler, T, R>(t_end, counts);
+    if (system == "charged") refs[system] = reference_states<systems::charged, T, R>(t_end, counts);
+  }
+  std::vector<analysis::order_result<T>> results(cases.size());
+  std::vector<std::string> names(cases.size());
+  const auto start = std::chrono::steady_clock::now();
+  geomint::studies::parallel_for(cases.size(), sel.threads, [&](std::size_t i) {
+    const auto& c = cases[i];
+    try {
+      const auto stepper = tools::make_stepper<T>(c.system, c.spec);
+      names[i] = stepper->name();
+      const auto& ref = refs.at(c.system);
+      auto [q0, qdot0] = tools::default_initial_data<T>(c.system);
+      const analysis::dynamic_vector<T> q0d = q0, p0d = stepper->momentum(q0, qdot0);
+      analysis::step_function<T> step = [&](const analysis::dynamic_vector<T>& q, const analysis::dynamic_vector<T>& p,
+                                            const T& tau, analysis::dynamic_vector<T>& q1, analysis::dynamic_vector<T>& p1) {
+        tools::state_vector<T> a, b;
+        if (!stepper->step(q, p, tau, a, b)) return false;
+        q1 = a;
+        p1 = b;
+        return true;
+      };
+      analysis::reference_function<T> reference = [&](const T& t, analysis::dynamic_vector<T>& q,
+                                                      analysis::dynamic_vector<T>& p) {
+        long key = -1;
+        if (t == t_end) key = 0;
+        for (long N : counts)
+          if (t == t_end / T(N)) key = N;
+        const auto& qp = ref.at(key);
+        q = qp.first;
+        p = qp.second;
+      };
+      results[i] = analysis::order_study<T>(step, reference, q0d, p0d, t_end, counts);
+    } catch (const std::exception& e) {
+      results[i].failure = e.what();
+    }
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  int status = 0;
+  if (sel.csv) std::cout << "system,scheme,nodes,m,local_order,global_order,error_constant\n";
+  else
+    std::cout << std::left << std::setw(10) << "system" << std::setw(13) << "scheme" << std::setw(16) << "nodes"
+              << std::setw(4) << "m" << std::right << std::setw(8) << "local" << std::setw(8) << "global"
+              << std::setw(12) << "constant" << "   global errors at tau = T/N\n";
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const auto& c = cases[i];
+    const auto& r = results[i];
+    if (!r.ok) {
+      std::cerr << "geomint-order: " << c.system << ", " << names[i] << ": " << r.failure << '\n';
+      status = 3;
+    }
+    const std::string lo = r.ok ? fixed2(r.local_order) : "nan", go = r.ok ? fixed2(r.global_order) : "nan",
+                      ec = r.ok ? sci3(r.error_constant) : "nan";
+    if (sel.csv) {
+      std::cout << c.system << ',' << c.spec.scheme << ',' << c.spec.nodes_label() << ','
+                << geomint::studies::m_label(c.spec) << ',' << lo << ',' << go << ',' << ec << '\n';
+    } else {
+      std::cout << std::left << std::setw(10) << c.system << std::setw(13) << c.spec.scheme << std::setw(16)
+                << c.spec.nodes_label() << std::setw(4) << geomint::studies::m_label(c.spec) << std::right
+                << std::setw(8) << lo << std::setw(8) << go << std::setw(12) << ec << "  ";
+      for (const T& e : r.global_errors) std::cout << ' ' << sci3(e);
+      std::cout << '\n';
+    }
+  }
+  std::cerr << "geomint-order: " << cases.size() << " case(s), " << std::numeric_limits<T>::digits10
+            << " digits, T = " << static_cast<double>(t_end) << ", N =";
+  for (long N : counts) std::cerr << ' ' << N;
+  std::cerr << "; " << std::fixed << std::setprecision(1) << seconds << " s on " << sel.threads << " thread(s)\n";
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  geomint::studies::selection sel;
+  std::vector<long> counts = {8, 16, 32, 64};
+  std::string t_end_text = "1";
+  const std::vector<std::string> systems = {"harmonic", "pendulum", "kepler", "charged"};
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string flag = argv[i];
+      if (flag == "--help" || flag == "-h") {
+        std::cout << usage;
+        return 0;
+      }
+      if (sel.parse(flag, i, argc, argv, systems, {"50", "100"})) continue;
+      if (flag != "--steps" && flag != "--t-end") throw geomint::studies::usage_error("unknown flag " + flag);
+      if (i + 1 >= argc) throw geomint::studies::usage_error("missing value after " + flag);
+      const std::string value = argv[++i];
+      if (flag == "--steps") {
+        counts.clear();
+        for (const std::string& s : geomint::studies::split_list(value)) counts.push_back(geomint::studies::parse_integer(flag, s));
+        if (counts.size() < 2) throw geomint::studies::usage_error("--steps needs at least two step counts");
+        for (std::size_t k = 0; k < counts.size(); ++k)
+          if (counts[k] < 1 || (k > 0 && counts[k] <= counts[k - 1]))
+            throw geomint::studies::usage_error("--steps must be positive and increasing");
+      } else {
+        t_end_text = value;
+      }
+    }
+    auto parse_time = [&](auto zero) {
+      using T = decltype(zero);
+      std::istringstream in(t_end_text);
+      T t;
+      in >> t;
+      if (in.fail() || !in.eof() || !(t > T(0)) || !geomint::detail::is_finite(t))
+        throw geomint::studies::usage_error("--t-end must be a finite number > 0");
+      return t;
+    };
+    if (sel.digits == 50) return run<cpp_bin_float_50, cpp_bin_float_100>(sel, parse_time(cpp_bin_float_50()), counts);
+    using float150 = number<cpp_bin_float<150>>;
+    return run<cpp_bin_float_100, float150>(sel, parse_time(cpp_bin_float_100()), counts);
+  } catch (const geomint::studies::usage_error& e) {
+    std::cerr << "geomint-order: " << e.what() << '\n' << usage;
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "geomint-order: " << e.what() << '\n';
+    return 1;
+  }
+}
