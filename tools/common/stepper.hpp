@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -19,6 +20,17 @@ namespace geomint::tools {
 /// A position or momentum of a built-in system (n <= 2; fixed storage, no allocation).
 template <class T>
 using state_vector = Eigen::Matrix<T, Eigen::Dynamic, 1, Eigen::ColMajor, 2, 1>;
+
+/// The scalar type of `--digits D` in the tools: double, cpp_bin_float_50, cpp_bin_float_100.
+template <int Digits>
+struct digits_scalar {
+  static_assert(Digits == 16 || Digits == 50 || Digits == 100, "geomint tools: digits must be 16, 50 or 100");
+  using type = std::conditional_t<Digits == 16, double,
+                                  std::conditional_t<Digits == 50, boost::multiprecision::cpp_bin_float_50,
+                                                     boost::multiprecision::cpp_bin_float_100>>;
+};
+template <int Digits>
+using scalar_for_digits = typename digits_scalar<Digits>::type;
 
 /// The free systems and the schemes the factory knows.
 inline const std::vector<std::string>& free_systems() {

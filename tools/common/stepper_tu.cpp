@@ -6,14 +6,6 @@
 #endif
 
 namespace geomint::tools {
-namespace {
-#if GEOMINT_STEPPER_DIGITS == 16
-using scalar = double;
-#elif GEOMINT_STEPPER_DIGITS == 50
-using scalar = boost::multiprecision::cpp_bin_float_50;
-#else
-using scalar = boost::multiprecision::cpp_bin_float_100;
-#endif
-}  // namespace
+using scalar = scalar_for_digits<GEOMINT_STEPPER_DIGITS>;
 template std::unique_ptr<stepper<scalar>> make_system_stepper<systems::GEOMINT_STEPPER_SYSTEM, scalar>(const scheme_spec&);
 }  // namespace geomint::tools

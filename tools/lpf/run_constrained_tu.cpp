@@ -25,13 +25,7 @@ int GEOMINT_RUN_STUB_CAT(GEOMINT_RUN_SYSTEM, GEOMINT_RUN_DIGITS)(const options&)
 #else
 namespace geomint::run {
 namespace {
-#if GEOMINT_RUN_DIGITS == 16
-using scalar = double;
-#elif GEOMINT_RUN_DIGITS == 50
-using scalar = boost::multiprecision::cpp_bin_float_50;
-#else
-using scalar = boost::multiprecision::cpp_bin_float_100;
-#endif
+using scalar = tools::scalar_for_digits<GEOMINT_RUN_DIGITS>;
 struct circle {
   using system = systems::free_particle_2d;
   using constraints = systems::unit_circle;

@@ -2,7 +2,7 @@
 #include "run_impl.hpp"
 
 namespace geomint::run {
-int run_free_16(const options& o) { return run_free<double>(o); }
-int run_free_50(const options& o) { return run_free<boost::multiprecision::cpp_bin_float_50>(o); }
-int run_free_100(const options& o) { return run_free<boost::multiprecision::cpp_bin_float_100>(o); }
+int run_free_16(const options& o) { return run_free<tools::scalar_for_digits<16>>(o); }
+int run_free_50(const options& o) { return run_free<tools::scalar_for_digits<50>>(o); }
+int run_free_100(const options& o) { return run_free<tools::scalar_for_digits<100>>(o); }
 }  // namespace geomint::run

@@ -162,29 +162,22 @@ int main(int argc, char** argv) {
   geomint::studies::selection sel;
   std::vector<long> counts = {8, 16, 32, 64};
   std::string t_end_text = "1";
-  const std::vector<std::string> systems = {"harmonic", "pendulum", "kepler", "charged"};
   try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string flag = argv[i];
-      if (flag == "--help" || flag == "-h") {
-        std::cout << usage;
-        return 0;
-      }
-      if (sel.parse(flag, i, argc, argv, systems, {"50", "100"})) continue;
-      if (flag != "--steps" && flag != "--t-end") throw geomint::studies::usage_error("unknown flag " + flag);
-      if (i + 1 >= argc) throw geomint::studies::usage_error("missing value after " + flag);
-      const std::string value = argv[++i];
-      if (flag == "--steps") {
-        counts.clear();
-        for (const std::string& s : geomint::studies::split_list(value)) counts.push_back(geomint::studies::parse_integer(flag, s));
-        if (counts.size() < 2) throw geomint::studies::usage_error("--steps needs at least two step counts");
-        for (std::size_t k = 0; k < counts.size(); ++k)
-          if (counts[k] < 1 || (k > 0 && counts[k] <= counts[k - 1]))
-            throw geomint::studies::usage_error("--steps must be positive and increasing");
-      } else {
-        t_end_text = value;
-      }
-    }
+    const bool go = geomint::studies::parse_command_line(
+        argc, argv, usage, sel, {"50", "100"}, {"--steps", "--t-end"}, [&](const std::string& flag, const std::string& value) {
+          if (flag == "--t-end") {
+            t_end_text = value;
+            return;
+          }
+          counts.clear();
+          for (const std::string& s : geomint::studies::split_list(value))
+            counts.push_back(geomint::studies::parse_integer(flag, s));
+          if (counts.size() < 2) throw geomint::studies::usage_error("--steps needs at least two step counts");
+          for (std::size_t k = 0; k < counts.size(); ++k)
+            if (counts[k] < 1 || (k > 0 && counts[k] <= counts[k - 1]))
+              throw geomint::studies::usage_error("--steps must be positive and increasing");
+        });
+    if (!go) return 0;
     auto parse_time = [&](auto zero) {
       using T = decltype(zero);
       std::istringstream in(t_end_text);

@@ -174,26 +174,19 @@ int main(int argc, char** argv) {
   geomint::studies::selection sel;
   extra_options x;
   try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string flag = argv[i];
-      if (flag == "--help" || flag == "-h") {
-        std::cout << usage;
-        return 0;
-      }
-      if (sel.parse(flag, i, argc, argv, {"harmonic", "pendulum", "kepler", "charged"}, {"16", "50", "100"})) continue;
-      if (flag != "--tau" && flag != "--long-tau" && flag != "--q0" && flag != "--p0" && flag != "--long-steps")
-        throw geomint::studies::usage_error("unknown flag " + flag);
-      if (i + 1 >= argc) throw geomint::studies::usage_error("missing value after " + flag);
-      const std::string value = argv[++i];
-      if (flag == "--tau") x.tau = value;
-      else if (flag == "--long-tau") x.long_tau = value;
-      else if (flag == "--q0") x.q0 = geomint::studies::split_list(value);
-      else if (flag == "--p0") x.p0 = geomint::studies::split_list(value);
-      else {
-        x.long_steps = geomint::studies::parse_integer(flag, value);
-        if (x.long_steps < 0) throw geomint::studies::usage_error("--long-steps must be >= 0");
-      }
-    }
+    const bool go = geomint::studies::parse_command_line(
+        argc, argv, usage, sel, {"16", "50", "100"}, {"--tau", "--long-tau", "--q0", "--p0", "--long-steps"},
+        [&](const std::string& flag, const std::string& value) {
+          if (flag == "--tau") x.tau = value;
+          else if (flag == "--long-tau") x.long_tau = value;
+          else if (flag == "--q0") x.q0 = geomint::studies::split_list(value);
+          else if (flag == "--p0") x.p0 = geomint::studies::split_list(value);
+          else {
+            x.long_steps = geomint::studies::parse_integer(flag, value);
+            if (x.long_steps < 0) throw geomint::studies::usage_error("--long-steps must be >= 0");
+          }
+        });
+    if (!go) return 0;
     if ((!x.q0.empty() || !x.p0.empty()) && sel.systems.size() != 1)
       throw geomint::studies::usage_error("--q0 / --p0 need a single --system");
     if (sel.digits == 16) return run<double>(sel, x);

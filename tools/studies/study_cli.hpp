@@ -123,6 +123,27 @@ struct selection {
   }
 };
 
+/// The command-line loop of a study: --help prints the usage and returns false (exit 0); the
+/// common flags go to `sel`; each flag in `extra_flags` is passed with its value to
+/// `extra(flag, value)`; anything else is a usage_error.
+template <class Extra>
+bool parse_command_line(int argc, char** argv, const char* usage, selection& sel, const std::vector<std::string>& digits,
+                        const std::vector<std::string>& extra_flags, Extra&& extra) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "--help" || flag == "-h") {
+      std::cout << usage;
+      return false;
+    }
+    if (sel.parse(flag, i, argc, argv, tools::free_systems(), digits)) continue;
+    if (std::find(extra_flags.begin(), extra_flags.end(), flag) == extra_flags.end())
+      throw usage_error("unknown flag " + flag);
+    if (i + 1 >= argc) throw usage_error("missing value after " + flag);
+    extra(flag, std::string(argv[++i]));
+  }
+  return true;
+}
+
 /// The m column of the tables ("-" for midpoint and trapezoidal).
 inline std::string m_label(const tools::scheme_spec& s) { return s.has_m() ? std::to_string(s.m) : "-"; }
 

@@ -6,7 +6,9 @@
 /// - global error e_glob(tau) = |Phi_tau^N(z_0) - phi_T(z_0)| ~ C tau^p,
 /// in the max norm over (q, p). The observed orders are the slopes between the two finest steps,
 /// log(e_i / e_{i+1}) / log(tau_i / tau_{i+1}); the error constant is C = e_glob / tau^p with
-/// p the rounded global order at the finest step.
+/// p the rounded global order at the finer step of that pair. Errors within a round-off margin
+/// (10^6 eps per step taken) do not measure the scheme: the slopes then use the finest pair of
+/// steps above it, and the study fails if there is none (more digits are needed).
 
 #include <cmath>
 #include <functional>
@@ -88,12 +90,24 @@ order_result<T> order_study(const step_function<T>& step, const reference_functi
     r.global_errors.push_back(distance(q, q_end, p, p_end));
     r.taus.push_back(tau);
   }
-  const std::size_t last = r.taus.size() - 1;
-  r.local_order = observed_slope(r.local_errors[last - 1], r.local_errors[last], r.taus[last - 1], r.taus[last]);
-  r.global_order = observed_slope(r.global_errors[last - 1], r.global_errors[last], r.taus[last - 1], r.taus[last]);
+  // The finest pair above the round-off margin, for each series.
+  const T margin = T(1000000) * std::numeric_limits<T>::epsilon();
+  auto finest = [&](const std::vector<T>& errors, bool global) -> std::ptrdiff_t {
+    for (std::size_t i = errors.size() - 1; i >= 1; --i)
+      if (errors[i] > margin * T(global ? step_counts[i] : 1)) return static_cast<std::ptrdiff_t>(i);
+    return -1;
+  };
+  const std::ptrdiff_t local = finest(r.local_errors, false), global = finest(r.global_errors, true);
+  if (local < 1 || global < 1) {
+    r.failure = "errors at round-off level on the whole ladder: use more digits or larger steps";
+    return r;
+  }
+  const auto l = static_cast<std::size_t>(local), g = static_cast<std::size_t>(global);
+  r.local_order = observed_slope(r.local_errors[l - 1], r.local_errors[l], r.taus[l - 1], r.taus[l]);
+  r.global_order = observed_slope(r.global_errors[g - 1], r.global_errors[g], r.taus[g - 1], r.taus[g]);
   using std::pow;
   using std::round;
-  r.error_constant = r.global_errors[last] / pow(r.taus[last], round(r.global_order));
+  r.error_constant = r.global_errors[g] / pow(r.taus[g], round(r.global_order));
   r.ok = true;
   return r;
 }
