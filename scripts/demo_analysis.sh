@@ -26,7 +26,7 @@ echo "observed orders (3 systems, 4 schemes, all families, m = 2..8, 50 digits):
   --digits 50 --tau 0.25 --csv > "$out/symplectic.csv" 2> "$out/symplectic.log"
 echo "symplecticity defects (50 digits, tau = 0.25): $(tail -n 1 "$out/symplectic.log")"
 
-"$build/tools/studies/geomint-symplectic" --system pendulum,kepler --scheme all --nodes all --m 4 \
+"$build/tools/studies/geomint-symplectic" --system pendulum,kepler,charged --scheme all --nodes all --m 4 \
   --digits 16 --tau 0.1 --long-steps 100000 --csv > "$out/energy.csv" 2> "$out/energy.log"
 echo "long-time energy (10^5 steps, tau = 0.1, m = 4, double): $(tail -n 1 "$out/energy.log")"
 

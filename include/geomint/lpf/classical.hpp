@@ -8,6 +8,7 @@
 /// One-step form: p_k = -d_1 L_d, p_{k+1} = d_2 L_d (position-momentum form of eq. 3).
 
 #include <array>
+#include <limits>
 #include <string>
 
 #include "geomint/lpf/lpf.hpp"
@@ -30,25 +31,36 @@ class galerkin_engine {
                   const std::array<T, M + 1>& c)
       : sys_(sys), B0_(B0), B1_(B1), w_(w), D0inv_(inverse_of(D0)), c_(c) {}
 
+  /// Unknowns: the increments Y_j = X_j - q_k (the basis is a partition of unity), solved by
+  /// simplified Newton; the iterations after the first need only first derivatives of L.
   step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt) const {
     V v0;
     if (!D::velocity(sys_, q, p, v0)) return {step_failure::singular_jacobian, 0, 0};
     const V a0 = D::acceleration(sys_, q, v0);
-    controls X = predict_controls<T, n, M>(D0inv_, c_, q, v0, a0, tau);
-    X.col(0) = q;
+    controls Y = predict_controls<T, n, M>(D0inv_, c_, V::Zero(), v0, a0, tau);
+    Y.col(0).setZero();
     constexpr int N = M * n;
     vec<T, N> z;
-    for (int j = 1; j <= M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
-    auto residual = [&](const vec<T, N>& zz, vec<T, N>& F, mat<T, N>& J) {
-      for (int j = 1; j <= M; ++j) X.col(j) = zz.template segment<n>((j - 1) * n);
-      assemble(X, tau, 0, 1, F, J);
+    for (int j = 1; j <= M; ++j) z.template segment<n>((j - 1) * n) = Y.col(j);
+    auto residual = [&](const vec<T, N>& zz, vec<T, N>& F, mat<T, N>* J) {
+      for (int j = 1; j <= M; ++j) Y.col(j) = zz.template segment<n>((j - 1) * n);
+      assemble_increments(q, Y, tau, F, J);
       F.template segment<n>(0) += tau * p;  // p_k + d_1 L_d = 0
     };
-    step_status st = newton_solve<N, T>(residual, z, opt);
+    const T scale = std::numeric_limits<T>::epsilon() * q.template lpNorm<Eigen::Infinity>();
+    step_status st = newton_solve_simplified<N, T>(residual, z, opt, scale);
     if (!st) return st;
-    for (int j = 1; j <= M; ++j) X.col(j) = z.template segment<n>((j - 1) * n);
-    q1 = X.col(M);
-    p1 = gradient_component(X, tau, M);
+    for (int j = 1; j <= M; ++j) Y.col(j) = z.template segment<n>((j - 1) * n);
+    q1 = q + Y.col(M);
+    // p_{k+1} = G_M = sum_j G_j - G_0 - (G_1 + ... + G_{M-1}) = p_k + tau sum_k w_k L_q(x_k, v_k)
+    // at the solution (the basis sums to 1, its derivatives to 0): the same value as G_M, but the
+    // Newton and round-off errors of Y do not pass through B1 / tau (an RKN-like update).
+    V sum = V::Zero();
+    for (int k = 0; k < Q; ++k) {
+      const V x = q + combine(Y, B0_, k), v = combine(Y, B1_, k) / tau;
+      sum += w_[k] * D::gradient(sys_, x, v).Lq;
+    }
+    p1 = p + tau * sum;
     return st;
   }
 
@@ -86,6 +98,38 @@ class galerkin_engine {
       G += w_[k] * (tau * B0_(k, j) * g.Lq + B1_(k, j) * g.Lv);
     }
     return G;
+  }
+
+  /// One-step system for the path q + sum_j phi_j Y_j: rows tau G_0..tau G_{M-1}, columns
+  /// Y_1..Y_M; J (if not null) from second derivatives, F alone from first derivatives.
+  template <int N>
+  void assemble_increments(const V& q, const controls& Y, const T& tau, vec<T, N>& F, mat<T, N>* J) const {
+    constexpr int blocks = N / n;
+    F.setZero();
+    if (J) J->setZero();
+    const T tau2 = tau * tau;
+    for (int k = 0; k < Q; ++k) {
+      const V x = q + combine(Y, B0_, k), v = combine(Y, B1_, k) / tau;
+      if (J) {
+        const hessian_data<T, n> h = D::hessian(sys_, x, v);
+        for (int r = 0; r < blocks; ++r) {
+          const int j = r;
+          F.template segment<n>(r * n) += w_[k] * (tau2 * B0_(k, j) * h.Lq + tau * B1_(k, j) * h.Lv);
+          for (int s = 0; s < blocks; ++s) {
+            const int l = 1 + s;
+            J->template block<n, n>(r * n, s * n) +=
+                w_[k] * ((tau2 * B0_(k, j) * B0_(k, l)) * h.Lqq + (tau * B0_(k, j) * B1_(k, l)) * h.Lqv +
+                         (tau * B1_(k, j) * B0_(k, l)) * h.Lvq + (B1_(k, j) * B1_(k, l)) * h.Lvv);
+          }
+        }
+      } else {
+        const gradient_data<T, n> g = D::gradient(sys_, x, v);
+        for (int r = 0; r < blocks; ++r) {
+          const int j = r;
+          F.template segment<n>(r * n) += w_[k] * (tau2 * B0_(k, j) * g.Lq + tau * B1_(k, j) * g.Lv);
+        }
+      }
+    }
   }
 
   /// Rows j = jrow0..(jrow0 + rows - 1) hold tau G_j; columns are the unknowns X_jcol0..; the

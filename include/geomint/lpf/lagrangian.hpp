@@ -274,6 +274,27 @@ struct derivatives {
     return e;
   }
 
+  /// E(x, v, a) alone (no Jacobian): one level of AD on V for natural systems, two on L
+  /// otherwise (E = L_q - L_vq v - L_vv a needs only second derivatives of L).
+  static V el_residual(const Sys& sys, const V& x, const V& v, const V& a) {
+    if constexpr (natural_system<Sys>) {
+      const Mt M = Sys::template mass_matrix<T>();
+      return V(gradient(sys, x, v).Lq - M * a);
+    } else {
+      const hessian_data<T, n> h = hessian(sys, x, v);
+      return V(h.Lq - h.Lvq * v - h.Lvv * a);
+    }
+  }
+
+  /// dL/dqdot alone: M v for natural systems (no AD), one level of AD otherwise.
+  static V momentum_of(const Sys& sys, const V& x, const V& v) {
+    if constexpr (natural_system<Sys>) {
+      return V(Sys::template mass_matrix<T>() * v);
+    } else {
+      return gradient(sys, x, v).Lv;
+    }
+  }
+
   /// qddot from the Euler-Lagrange equations: L_vv a = L_q - L_vq v.
   static V acceleration(const Sys& sys, const V& x, const V& v) {
     const hessian_data<T, n> h = hessian(sys, x, v);

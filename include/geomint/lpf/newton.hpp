@@ -6,7 +6,9 @@
 /// (the round-off floor of an ill-conditioned system). Anything else is reported: a singular
 /// Jacobian, a non-finite residual or iterate, or no convergence within the iteration budget.
 
+#include <array>
 #include <limits>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -100,6 +102,173 @@ step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& o
     const T scale = T(1) + z.template lpNorm<Eigen::Infinity>();
     if (size <= tol * scale) return st;
     if (size <= floor_level * scale && size * T(2) > previous) return st;  // round-off floor
+    previous = size;
+  }
+  st.reason = step_failure::no_convergence;
+  return st;
+}
+
+/// A stored LU factorisation with complete pivoting (P A Q = L U) of a small fixed-size
+/// matrix, for reuse across Newton iterations; same pivoting and singularity test as
+/// `solve_small`.
+template <class T, int N>
+class lu_small {
+ public:
+  /// False if A is singular to working precision or not finite.
+  bool factor(const mat<T, N>& A) {
+    using std::abs;
+    lu_ = A;
+    T scale(0);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        if (abs(lu_(i, j)) > scale) scale = abs(lu_(i, j));
+    if (!is_finite(scale)) return false;
+    const T tiny = T(N) * std::numeric_limits<T>::epsilon() * scale;
+    for (int k = 0; k < N; ++k) {
+      int pr = k, pc = k;
+      T best(-1);
+      for (int i = k; i < N; ++i)
+        for (int j = k; j < N; ++j)
+          if (abs(lu_(i, j)) > best) {
+            best = abs(lu_(i, j));
+            pr = i;
+            pc = j;
+          }
+      if (!(best > tiny)) return false;
+      row_[static_cast<std::size_t>(k)] = pr;
+      col_[static_cast<std::size_t>(k)] = pc;
+      if constexpr (N > 1) {
+        if (pr != k)
+          for (int j = 0; j < N; ++j) std::swap(lu_(k, j), lu_(pr, j));
+        if (pc != k)
+          for (int i = 0; i < N; ++i) std::swap(lu_(i, k), lu_(i, pc));
+      }
+      const T inv = T(1) / lu_(k, k);
+      for (int i = k + 1; i < N; ++i) {
+        const T f = lu_(i, k) * inv;
+        lu_(i, k) = f;
+        if (f == T(0)) continue;
+        for (int j = k + 1; j < N; ++j) lu_(i, j) -= f * lu_(k, j);
+      }
+    }
+    return true;
+  }
+  /// x = A^{-1} b; false if x is not finite.
+  bool solve(vec<T, N> b, vec<T, N>& x) const {
+    // The multipliers were swapped with their rows, so all row swaps come first (P b).
+    if constexpr (N > 1) {
+      for (int k = 0; k < N; ++k) {
+        const int r = row_[static_cast<std::size_t>(k)];
+        if (r != k) std::swap(b[k], b[r]);
+      }
+    }
+    for (int k = 0; k < N; ++k)
+      for (int i = k + 1; i < N; ++i) b[i] -= lu_(i, k) * b[k];
+    for (int k = N - 1; k >= 0; --k) {
+      T sum = b[k];
+      for (int j = k + 1; j < N; ++j) sum -= lu_(k, j) * b[j];
+      b[k] = sum / lu_(k, k);
+    }
+    if constexpr (N > 1) {
+      for (int k = N - 1; k >= 0; --k) {
+        const int c = col_[static_cast<std::size_t>(k)];
+        if (c != k) std::swap(b[k], b[c]);
+      }
+    }
+    x = b;
+    return all_finite(x);
+  }
+
+ private:
+  mat<T, N> lu_ = mat<T, N>::Zero();
+  std::array<int, N> row_{}, col_{};
+};
+
+/// A factorised Newton matrix kept between solves (e.g. from one step to the next), with the
+/// largest contraction rate observed while it was used.
+template <class T, int N>
+struct jacobian_cache {
+  lu_small<T, N> lu;
+  bool valid = false;
+  T rate = T(0);
+};
+
+/// Simplified Newton for F(z) = 0 from z: the Jacobian is evaluated and factorised at the first
+/// iterate (or taken from `cache` if that holds a valid factorisation) and reused while the
+/// iteration contracts; the other iterations evaluate the residual alone, which for the
+/// variational integrators needs one level of AD less. `residual(z, F, J)` fills F and, if the
+/// pointer J is not null, J = dF/dz.
+///
+/// Convergence: the correction is at the eps level relative to `scale` + |z|, or below
+/// `tolerance_ulps` eps with a contraction rate rho <= 1/8 (so the error left, about rho times
+/// the correction, is at the eps level); or, below eps^(2/3), the correction has stopped
+/// contracting (round-off floor). The Jacobian is refreshed at the current iterate when the
+/// iteration contracts by less than a factor 2 or too slowly to reach eps in four more steps.
+template <int N, class T, class Fn>
+step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt, const T& scale,
+                                    jacobian_cache<T, N>* cache = nullptr) {
+  using std::cbrt;
+  const T eps = std::numeric_limits<T>::epsilon();
+  const T tol = T(opt.tolerance_ulps) * eps;
+  const T floor_level = cbrt(eps * eps);  // eps^(2/3)
+  step_status st;
+  if (!cache) {
+    jacobian_cache<T, N> local;
+    return newton_solve_simplified<N, T>(residual, z, opt, scale, &local);
+  }
+  jacobian_cache<T, N>& jc = *cache;
+  vec<T, N> F;
+  mat<T, N> J;
+  bool refresh = !jc.valid;
+  jc.valid = false;
+  jc.rate = T(0);
+  T previous(0);
+  for (int it = 1; it <= opt.max_iterations; ++it) {
+    st.iterations = it;
+    const bool fresh = refresh;
+    residual(z, F, fresh ? &J : static_cast<mat<T, N>*>(nullptr));
+    if (!all_finite(F) || (fresh && !all_finite(J))) {
+      st.reason = step_failure::non_finite_iterate;
+      return st;
+    }
+    if (fresh) {
+      if (!jc.lu.factor(J)) {
+        vec<T, N> dz;
+        st.reason = solve_small<T, N>(J, vec<T, N>(-F), dz) || all_finite(dz) ? step_failure::singular_jacobian
+                                                                             : step_failure::non_finite_iterate;
+        return st;
+      }
+      refresh = false;
+    }
+    vec<T, N> dz;
+    if (!jc.lu.solve(vec<T, N>(-F), dz)) {
+      st.reason = step_failure::non_finite_iterate;
+      return st;
+    }
+    z += dz;
+    const T size = dz.template lpNorm<Eigen::Infinity>();
+    const T s = scale + z.template lpNorm<Eigen::Infinity>();
+    // A fresh Jacobian makes this a full Newton step (quadratic convergence); a reused one
+    // converges linearly with rate rho, measured from the previous correction.
+    T rho(1);
+    if (!fresh && it > 1) {
+      rho = size / previous;
+      if (rho > jc.rate) jc.rate = rho;
+    }
+    const bool converged = size <= eps * s || (size <= tol * s && (fresh || rho <= T(1) / T(8))) ||
+                           (it > 1 && size <= floor_level * s && size * T(2) > previous);  // round-off floor
+    if (converged) {
+      jc.valid = true;
+      return st;
+    }
+    // Refresh the matrix when the iteration contracts by less than 2, or when at its rate more
+    // than four further corrections would be needed to reach eps (rho^4 > eps s / size): then
+    // a Newton step (quadratic) is cheaper. In double a reused matrix typically stays; in 50
+    // digits the linear rate rarely pays.
+    if (!fresh && it > 1) {
+      const T rho2 = rho * rho;
+      if (rho > T(1) / T(2) || rho2 * rho2 * size > eps * s) refresh = true;
+    }
     previous = size;
   }
   st.reason = step_failure::no_convergence;

@@ -1,0 +1,105 @@
+// Benchmarks of one step of geomint's variational integrators (single thread), issue 7.
+//
+//   <system>/<scalar>/<scheme>: one step of the one-step form (q_k, p_k) -> (q_{k+1}, p_{k+1})
+//   along the trajectory (each iteration continues from the previous state):
+//     pendulum: theta0 = 1, thetadot0 = 0, tau = 0.1;
+//     kepler:   e = 0.5, q0 = (0.5, 0), qdot0 = (0, sqrt 3), tau = 0.05;
+//   schemes: lpf m = 2..8 on each node family (equispaced, lobatto, chebyshev, gauss-interior;
+//   Lagrange basis), midpoint, trapezoidal, galerkin m = 2..4; scalars double and
+//   cpp_bin_float_50.
+// Counter newton_its: average Newton iterations per step.
+// Filter with --benchmark_filter, e.g. --benchmark_filter='double/lpf-m[468]-gauss'.
+#include <string>
+#include <utility>
+
+#include <benchmark/benchmark.h>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include "geomint/lpf/integrator.hpp"
+#include "geomint/lpf/systems.hpp"
+
+namespace {
+
+using mp50 = boost::multiprecision::cpp_bin_float_50;
+
+template <class Sys, class T>
+std::pair<geomint::vec<T, Sys::dof>, geomint::vec<T, Sys::dof>> initial() {
+  constexpr int n = Sys::dof;
+  geomint::vec<T, n> q, v;
+  if constexpr (n == 1) {
+    q[0] = T(1);
+    v[0] = T(0);
+  } else {
+    using std::sqrt;
+    q << T(1) / T(2), T(0);
+    v << T(0), T(sqrt(T(3)));
+  }
+  return {q, v};
+}
+
+template <class Sys, class T>
+T step_size() {
+  return Sys::dof == 1 ? T(1) / T(10) : T(1) / T(20);
+}
+
+template <class Scheme, class Sys, class T>
+void BM_step(benchmark::State& state) {
+  const geomint::integrator<Scheme, Sys, T> I(Sys{}, step_size<Sys, T>());
+  const auto [q0, v0] = initial<Sys, T>();
+  auto s = I.initial_state(q0, v0);
+  long iterations = 0, steps = 0;
+  for (auto _ : state) {
+    const geomint::step_status st = I.try_step(s);
+    if (!st) {
+      state.SkipWithError(st.message().c_str());
+      break;
+    }
+    iterations += st.iterations;
+    ++steps;
+    benchmark::DoNotOptimize(s.q.data());
+    benchmark::DoNotOptimize(s.p.data());
+  }
+  state.counters["newton_its"] = steps ? double(iterations) / double(steps) : 0.0;
+}
+
+template <class Scheme, class Sys, class T>
+void add(const std::string& scalar, const std::string& scheme) {
+  const std::string name = std::string(Sys::name) + "/" + scalar + "/" + scheme;
+  benchmark::RegisterBenchmark(name.c_str(), &BM_step<Scheme, Sys, T>)->Unit(benchmark::kMicrosecond);
+}
+
+template <int M, class Sys, class T>
+void add_lpf(const std::string& scalar) {
+  using namespace geomint;
+  const std::string m = "lpf-m" + std::to_string(M) + "-";
+  add<lpf<M, equispaced>, Sys, T>(scalar, m + "equispaced");
+  add<lpf<M, gauss_lobatto>, Sys, T>(scalar, m + "lobatto");
+  add<lpf<M, chebyshev_lobatto>, Sys, T>(scalar, m + "chebyshev");
+  add<lpf<M, gauss_interior>, Sys, T>(scalar, m + "gauss-interior");
+}
+
+template <class Sys, class T>
+void add_all(const std::string& scalar) {
+  using namespace geomint;
+  add<midpoint_vi, Sys, T>(scalar, "midpoint");
+  add<trapezoidal_vi, Sys, T>(scalar, "trapezoidal");
+  add<galerkin_vi<2>, Sys, T>(scalar, "galerkin-m2");
+  add<galerkin_vi<3>, Sys, T>(scalar, "galerkin-m3");
+  add<galerkin_vi<4>, Sys, T>(scalar, "galerkin-m4");
+  [&]<int... M>(std::integer_sequence<int, M...>) { (add_lpf<M + 2, Sys, T>(scalar), ...); }
+  (std::make_integer_sequence<int, 7>{});
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  add_all<geomint::systems::pendulum, double>("double");
+  add_all<geomint::systems::kepler, double>("double");
+  add_all<geomint::systems::pendulum, mp50>("cpp_bin_float_50");
+  add_all<geomint::systems::kepler, mp50>("cpp_bin_float_50");
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
