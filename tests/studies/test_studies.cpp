@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "catch.hpp"
+#include "geomint/analysis/exact_scheme.hpp"
 #include "geomint/analysis/order_study.hpp"
 #include "geomint/analysis/reference_flow.hpp"
 #include "geomint/analysis/symplecticity.hpp"
@@ -126,9 +127,17 @@ TEST_CASE("variational schemes are symplectic to working precision; LPF on equis
 }
 
 TEST_CASE("observed orders on the pendulum", "[analysis][order]") {
-  check_orders<midpoint_vi>(2);
+  // Expected orders from independent sources: midpoint 2 (its exact R(tau), eq. 17); Galerkin with
+  // m-point Gauss quadrature 2m (variational error analysis of Galerkin VIs); LPF on equispaced
+  // nodes the order of the exact two-step scheme of the harmonic oscillator (exact_scheme.hpp);
+  // LPF on the m - 1 Gauss interior nodes 2(m - 1), the order of (m - 1)-stage Gauss collocation.
+  check_orders<midpoint_vi>(exact_midpoint_two_step().order);
   check_orders<galerkin_vi<2>>(4);
-  check_orders<lpf<2, equispaced>>(2);
+  check_orders<lpf<2, equispaced>>(exact_two_step<2>().order);
+  check_orders<lpf<3, equispaced>>(exact_two_step<3>().order);
+  check_orders<lpf<4, equispaced>>(exact_two_step<4>().order);
+  check_orders<lpf<3, gauss_interior>>(4);
+  check_orders<lpf<4, gauss_interior>>(6);
 }
 
 TEST_CASE("energy behaviour: slope and maximum", "[analysis][symplectic]") {
