@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -61,7 +62,9 @@ int run_free(const options& o) {
   const auto stepper = tools::make_stepper<T>(o.system, spec);
   const int n = stepper->dof();
   const T tau = parse_scalar<T>(o.tau);
-  auto [q, p] = initial_data<T>(o, *stepper);
+  // Not a structured binding: the lambdas below capture q and p (Clang 14 cannot).
+  tools::state_vector<T> q, p;
+  std::tie(q, p) = initial_data<T>(o, *stepper);
   long step = 0;
   T t(0);
   std::cout << std::setprecision(std::numeric_limits<T>::max_digits10);
