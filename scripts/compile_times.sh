@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Compile-time profile of one CMake preset: configures it into build/<preset>-times with a
+# compiler launcher that records the CPU time (user + system) of every compile and link, builds
+# the given targets (default: all) and prints the units by CPU time and the total. CPU time, not
+# wall time, so that the figures hold on a loaded machine.
+# Usage: bash scripts/compile_times.sh <preset> [target...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ $# -ge 1 ] || { echo "usage: bash scripts/compile_times.sh <preset> [target...]" >&2; exit 2; }
+preset=$1; shift
+build="build/${preset}-times"
+log="$PWD/$build/compile_times.log"
+mkdir -p "$build"
+launcher="$PWD/$build/time_launcher.sh"
+cat > "$launcher" <<'LAUNCHER'
+#!/usr/bin/env bash
+# Runs a compile or link command under /usr/bin/time: "user system wall output" per line.
+out=""; prev=""
+for arg in "$@"; do [ "$prev" = "-o" ] && out="$arg"; prev="$arg"; done
+exec /usr/bin/time -f "%U %S %e $out" -a -o "$GEOMINT_TIMES_LOG" "$@"
+LAUNCHER
+chmod +x "$launcher"
+rm -f "$log"
+cmake --preset "$preset" -B "$build" -DCMAKE_CXX_COMPILER_LAUNCHER="$launcher" \
+      -DCMAKE_CXX_LINKER_LAUNCHER="$launcher" > /dev/null
+targets=()
+for t in "$@"; do targets+=(--target "$t"); done
+GEOMINT_TIMES_LOG="$log" cmake --build "$build" -j2 "${targets[@]}"
+echo "=== CPU seconds (user + system) per unit, largest first ($log) ==="
+awk '{printf "%8.1f  %s\n", $1 + $2, $4}' "$log" | sort -rn
+awk '{cpu += $1 + $2} END {printf "=== total: %.0f s of CPU time in %d compiles and links ===\n", cpu, NR}' "$log"

@@ -1,0 +1,1 @@
+/// The source that builds the tests' precompiled header (pch.hpp); it defines nothing.
