@@ -46,7 +46,8 @@ struct step_status {
   std::string message() const {
     std::string text = "geomint: step " + std::to_string(step) + ": " + std::string(to_string(reason));
     if (node >= 0) text += " at node " + std::to_string(node);
-    return text + " (after " + std::to_string(iterations) + " Newton iterations)";
+    if (iterations > 0) text += " (after " + std::to_string(iterations) + " Newton iterations)";
+    return text;
   }
 };
 
