@@ -311,8 +311,7 @@ class integrator {
   // sigma = D2 gamma, force = [gamma + e2, sigma]^*.
   void segment_stress(const vec6<T>& gamma, vec6<T>& sigma, vec6<T>& force) const {
     sigma = mat_.D2.cwiseProduct(gamma);
-    vec6<T> Gamma = gamma;
-    Gamma(4) += T(1);
+    const vec6<T> Gamma = gamma + axis<T>();
     force = lie::dual_bracket<T>(Gamma, sigma);
   }
 
@@ -320,8 +319,7 @@ class integrator {
     configuration_vector c(gamma_.size() + 1);
     c[0] = g0;
     for (std::size_t j = 0; j < gamma_.size(); ++j) {
-      vec6<T> Gamma = gamma_[j];
-      Gamma(4) += T(1);
+      const vec6<T> Gamma = gamma_[j] + axis<T>();
       c[j + 1] = c[j] * lie::cay<T>(vec6<T>(ds_ * Gamma));
     }
     return c;
