@@ -12,6 +12,7 @@
 
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/lpf.hpp"
+#include "geomint/schemes/paper_schemes.hpp"
 
 namespace geomint {
 
