@@ -22,6 +22,7 @@
 #include "geomint/schemes/lpf.hpp"
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/constrained_lpf.hpp"
+#include "geomint/schemes/paper_schemes.hpp"
 #include "geomint/schemes/paper23.hpp"
 #include "geomint/integrator.hpp"
 // Lie groups and the geometrically exact beam

@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
       stepping += clock::now() - a;
       record(n);
     }
-  } catch (const gb::step_error& e) {
+  } catch (const geomint::integration_error& e) {
     std::cerr << e.what() << "\n";
     status = 3;
   }

@@ -14,6 +14,15 @@
 
 namespace geomint::beam {
 
+/// The beam axis e2 = (0, E2) in se(3): the strain of the undeformed straight beam is
+/// gamma + e2 with gamma = 0 (beam paper, section 3).
+template <class T>
+lie::vec6<T> axis() {
+  lie::vec6<T> e = lie::vec6<T>::Zero();
+  e(4) = T(1);
+  return e;
+}
+
 template <class T>
 struct material {
   lie::vec6<T> D1;  ///< diagonal of the inertia matrix

@@ -4,7 +4,6 @@
 ///   xi = (omega, v) in R^6,  xi^ = [[omega^, v], [0, 0]] in R^{4x4};
 ///   [xi, eta] = ad_xi eta = (w x w', w x v' - w' x v)           (= vee([xi^, eta^]));
 ///   [xi, mu]^* = ad_xi^T mu = (pi x w + p x v, p x w)           for mu = (pi, p);
-///   e2 = (0,0,0, 0,1,0)  (the beam axis E2);
 ///   cay(xi) = (I - xi^/2)^{-1} (I + xi^/2).
 ///
 /// A group element g = (R, x) acts on points by y -> R y + x (4x4 matrix [[R, x], [0, 1]]).
@@ -35,13 +34,6 @@ vec6<T> make_twist(const vec3<T>& omega, const vec3<T>& v) {
   return xi;
 }
 
-/// The beam axis e2 = (0, E2) in se(3).
-template <class T>
-vec6<T> e2() {
-  vec6<T> e = vec6<T>::Zero();
-  e(4) = T(1);
-  return e;
-}
 
 /// An element (R, x) of SE(3).
 template <class T>

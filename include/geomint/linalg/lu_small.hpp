@@ -20,6 +20,7 @@ class lu_small {
   /// False if A is singular to working precision or not finite.
   bool factor(const mat<T, N>& A) {
     using std::abs;
+    if (!all_finite(A)) return false;  // a NaN would slip through the pivot comparisons
     lu_ = A;
     T scale(0);
     for (int i = 0; i < N; ++i)

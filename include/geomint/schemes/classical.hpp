@@ -231,7 +231,4 @@ struct trapezoidal_vi {
   };
 };
 
-/// The paper's classical comparison scheme.
-using scheme17 = midpoint_vi;
-
 }  // namespace geomint

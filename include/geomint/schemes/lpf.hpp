@@ -220,9 +220,7 @@ struct lpf {
   };
 };
 
-/// Readable aliases. The paper's schemes: (16), (18), (19) are m = 2, 3, 4 on equispaced
-/// nodes for the harmonic oscillator; (21) and (22) are m = 2 with the Lagrange (eq. 8) and
-/// Bernstein (eq. 13) bases.
+/// Readable aliases by node family (the paper's numbered schemes: schemes/paper_schemes.hpp).
 template <int M, class Basis = lagrange>
 using lpf_equispaced = lpf<M, equispaced, Basis>;
 template <int M, class Basis = lagrange>
@@ -231,10 +229,5 @@ template <int M, class Basis = lagrange>
 using lpf_lobatto = lpf<M, gauss_lobatto, Basis>;
 template <int M, class Basis = lagrange>
 using lpf_chebyshev = lpf<M, chebyshev_lobatto, Basis>;
-using scheme16 = lpf<2, equispaced, lagrange>;
-using scheme18 = lpf<3, equispaced, lagrange>;
-using scheme19 = lpf<4, equispaced, lagrange>;
-using scheme21 = lpf<2, equispaced, lagrange>;
-using scheme22 = lpf<2, equispaced, bernstein>;
 
 }  // namespace geomint

@@ -1,0 +1,112 @@
+/// Newton's method (solvers/newton.hpp): full and simplified, convergence to working precision
+/// and every failure reason.
+///
+/// Independent sources of the expected values: closed-form roots (sqrt 2; the intersection of
+/// x^2 + y^2 = 4 and x y = 1, x = (sqrt 6 + sqrt 2)/2, y = (sqrt 6 - sqrt 2)/2); equations built
+/// to have a singular Jacobian, no root, or a non-finite residual.
+#include <cmath>
+#include <limits>
+
+#include "catch.hpp"
+#include "geomint/solvers/newton.hpp"
+#include "scalar_types.hpp"
+
+using namespace geomint;
+using geomint::test::abs_diff;
+using geomint::test::eps_tol;
+
+namespace {
+/// F = (x^2 + y^2 - 4, x y - 1), J = [[2x, 2y], [y, x]].
+template <class T>
+void circle_hyperbola(const vec<T, 2>& z, vec<T, 2>& F, mat<T, 2>* J) {
+  F[0] = z[0] * z[0] + z[1] * z[1] - T(4);
+  F[1] = z[0] * z[1] - T(1);
+  if (J) *J << T(2) * z[0], T(2) * z[1], z[1], z[0];
+}
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("newton_solve: quadratic convergence to the closed-form root", "[solvers]",
+                        geomint::test::integrator_scalar_types) {
+  using T = TestType;
+  using std::sqrt;
+  vec<T, 1> z(T(1));
+  auto sqrt2 = [](const vec<T, 1>& x, vec<T, 1>& F, mat<T, 1>& J) {
+    F[0] = x[0] * x[0] - T(2);
+    J(0, 0) = T(2) * x[0];
+  };
+  const step_status st = detail::newton_solve<1, T>(sqrt2, z, newton_options<T>{});
+  REQUIRE(st);
+  CHECK(abs_diff(z[0], T(sqrt(T(2)))) <= eps_tol<T>(4));
+  CHECK(st.iterations <= 12);  // quadratic: about log2(digits) iterations from 1
+
+  vec<T, 2> w(T(2), T(1) / T(2));
+  auto full = [](const vec<T, 2>& x, vec<T, 2>& F, mat<T, 2>& J) { circle_hyperbola<T>(x, F, &J); };
+  REQUIRE(detail::newton_solve<2, T>(full, w, newton_options<T>{}));
+  const T s6 = sqrt(T(6)), s2 = sqrt(T(2));
+  CHECK(abs_diff(w[0], T((s6 + s2) / T(2))) <= eps_tol<T>(8));
+  CHECK(abs_diff(w[1], T((s6 - s2) / T(2))) <= eps_tol<T>(8));
+}
+
+TEMPLATE_LIST_TEST_CASE("newton_solve_simplified: same root, and a reused factorisation", "[solvers]",
+                        geomint::test::integrator_scalar_types) {
+  using T = TestType;
+  using std::sqrt;
+  int jacobians = 0;
+  auto residual = [&](const vec<T, 2>& x, vec<T, 2>& F, mat<T, 2>* J) {
+    if (J) ++jacobians;
+    circle_hyperbola<T>(x, F, J);
+  };
+  detail::jacobian_cache<T, 2> cache;
+  vec<T, 2> w(T(2), T(1) / T(2));
+  REQUIRE(detail::newton_solve_simplified<2, T>(residual, w, newton_options<T>{}, T(0), &cache));
+  const T s6 = sqrt(T(6)), s2 = sqrt(T(2));
+  CHECK(abs_diff(w[0], T((s6 + s2) / T(2))) <= eps_tol<T>(16));
+  CHECK(abs_diff(w[1], T((s6 - s2) / T(2))) <= eps_tol<T>(16));
+  CHECK(cache.valid);
+  // Started sqrt(eps) away from the root, the cached matrix (exact to O(sqrt eps) there)
+  // contracts by sqrt(eps) per correction: two corrections and no new Jacobian.
+  const int before = jacobians;
+  vec<T, 2> near = w;
+  near[0] += sqrt(std::numeric_limits<T>::epsilon());
+  REQUIRE(detail::newton_solve_simplified<2, T>(residual, near, newton_options<T>{}, T(0), &cache));
+  CHECK(jacobians == before);
+  CHECK(abs_diff(near[0], w[0]) <= eps_tol<T>(16));
+}
+
+TEMPLATE_LIST_TEST_CASE("Newton failures: singular Jacobian, no convergence, non-finite residual", "[solvers]",
+                        geomint::test::integrator_scalar_types) {
+  using T = TestType;
+  // F = x^2 at x = 0: J = 0, singular.
+  {
+    vec<T, 1> z(T(0));
+    auto f = [](const vec<T, 1>& x, vec<T, 1>& F, mat<T, 1>& J) {
+      F[0] = x[0] * x[0] + T(1);
+      J(0, 0) = T(2) * x[0];
+    };
+    CHECK(detail::newton_solve<1, T>(f, z, newton_options<T>{}).reason == step_failure::singular_jacobian);
+  }
+  // F = x^2 + 1 has no real root: from x = 1/2 the iterates wander, the budget runs out.
+  {
+    vec<T, 1> z(T(1) / T(2));
+    auto f = [](const vec<T, 1>& x, vec<T, 1>& F, mat<T, 1>& J) {
+      F[0] = x[0] * x[0] + T(1);
+      J(0, 0) = T(2) * x[0];
+    };
+    newton_options<T> opt;
+    opt.max_iterations = 5;
+    const step_status st = detail::newton_solve<1, T>(f, z, opt);
+    CHECK(st.reason == step_failure::no_convergence);
+    CHECK(st.iterations == 5);
+  }
+  // A residual that is NaN at the start.
+  {
+    vec<T, 1> z(T(-1));
+    auto f = [](const vec<T, 1>& x, vec<T, 1>& F, mat<T, 2 - 1>* J) {
+      using std::sqrt;
+      F[0] = sqrt(x[0]);
+      if (J) (*J)(0, 0) = T(1);
+    };
+    CHECK(detail::newton_solve_simplified<1, T>(f, z, newton_options<T>{}, T(0)).reason ==
+          step_failure::non_finite_iterate);
+  }
+}
