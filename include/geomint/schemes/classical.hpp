@@ -178,9 +178,28 @@ Eigen::Matrix<T, Q, M + 1> basis_at(const std::array<T, Q>& g) {
 /// w = 1 / ((1 - x^2) P_Q'(x)^2) with x = 1 - 2g, 1 - x^2 = 4 g (1 - g).
 template <int Q, class T>
 void gauss_legendre(std::array<T, Q>& g, vec<T, Q>& w) {
-  const auto c = nodes<gauss_interior, Q + 1, T>();
+  if constexpr (Q + 1 <= max_floating_m) {
+    const auto c = nodes<gauss_interior, Q + 1, T>();
+    for (int k = 0; k < Q; ++k) g[static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k + 1)];
+  } else {
+    // Q = max_floating_m (Galerkin m = 16) needs gauss_interior<17>, beyond the node table:
+    // Newton on P_Q from x_k = cos(pi (4k + 3) / (4Q + 2)) (Tricomi's estimate, ascending c).
+    using std::abs;
+    using std::atan;
+    using std::cos;
+    const T pi = T(4) * atan(T(1));
+    for (int k = 0; k < Q; ++k) {
+      T c = (T(1) - cos(pi * T(4 * k + 3) / T(4 * Q + 2))) / T(2);
+      for (int it = 0; it < 100; ++it) {
+        const auto v = legendre_at<T>(Q, c);
+        const T dc = v.p / (T(-2) * v.dp);  // dx/dc = -2
+        c -= dc;
+        if (abs(dc) <= T(4) * std::numeric_limits<T>::epsilon()) break;
+      }
+      g[static_cast<std::size_t>(k)] = c;
+    }
+  }
   for (int k = 0; k < Q; ++k) {
-    g[static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k + 1)];
     const T gk = g[static_cast<std::size_t>(k)];
     const T dp = legendre_at<T>(Q, gk).dp;
     w[k] = T(1) / (T(4) * gk * (T(1) - gk) * dp * dp);
