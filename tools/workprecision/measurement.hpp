@@ -151,6 +151,7 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
       const auto r = measure<P, T, R>(m, knob, t_end, ref);
       if (!r) {
         std::cerr << "geomint-workprecision: " << m.name << " failed at knob " << knob << " (skipped)\n";
+        if (m.kind == knob_kind::tolerance) break;  // the controller met round-off
       } else {
         by_method[m.name].push_back(*r);
         if (o.csv)
@@ -165,7 +166,7 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
         if (m.kind == knob_kind::none || r->final_error < g.floor || r->cpu > max_seconds) break;
         // Round-off floor: two runs without improvement (adaptive error control is erratic:
         // four), or a tolerance below the scalar's precision.
-        if (m.kind == knob_kind::tolerance && knob >= 2 * (g.digits + 1)) break;
+        if (m.kind == knob_kind::tolerance && knob >= 2 * (g.digits - 2)) break;
         if (r->final_error >= prev_error && r->final_error < 1e-6) {
           if (++worse >= (m.kind == knob_kind::tolerance ? 4 : 2)) break;
         } else {

@@ -173,8 +173,11 @@ long adaptive_run(Stepper& stepper, const T& t_end, arr<T, P::n>& q, arr<T, P::n
   T t(0), dt = t_end / T(1000);
   long accepted = 0;
   arr<T, n> qq, pp;
+  // Below this step size the controller has met round-off (tolerance near the scalar's
+  // precision): reported as a failed run instead of creeping on.
+  const T dt_min = t_end / T(1000000000L);
   for (long attempts = 0; t < t_end; ++attempts) {
-    if (attempts > 100000000L) return -1;
+    if (attempts > 20000000L || dt < dt_min) return -1;
     if (t + dt > t_end) dt = t_end - t;
     if (stepper.try_step(rhs, x, t, dt) == odeint::success) {
       ++accepted;
