@@ -3,11 +3,13 @@
 Debian's matplotlib).
 
 usage: /usr/bin/python3 tools/plot_workprecision.py CSV [PNG]
-  CSV  output of `geomint-workprecision --system pendulum|kepler --csv` (rows, then '#' summary)
-  PNG  default docs/figures/workprecision_<system>.png, <system> read from the summary line
+  CSV  output of `geomint-workprecision --system pendulum|kepler [--digits 16|50] --csv` (rows,
+       then '#' summary)
+  PNG  default docs/figures/workprecision_<system>_<digits>.png, read from the summary line
 
 Left: final phase-space error against CPU seconds; right: max energy error against CPU seconds;
-log-log, one line per method (Odeint's steppers dashed, black markers), the summary as a caption.
+log-log, one line per method (peers -- Odeint, Stormer-Verlet compositions, Taylor series --
+dashed with square markers), the summary as a caption.
 """
 import csv
 import re
@@ -35,28 +37,32 @@ def read(path):
         s["cpu"].append(float(r["cpu_seconds"]))
         s["err"].append(max(float(r["final_error"]), FLOOR))
         s["dE"].append(max(float(r["max_energy_error"]), FLOOR))
-    system = "unknown"
+    system, scalar = "unknown", "double"
     for n in notes:
-        m = re.match(r"summary \((\w+)", n)
+        m = re.match(r"summary \((\w+), ([\w]+)", n)
         if m:
-            system = m.group(1)
-    return series, notes, system
+            system, scalar = m.group(1), m.group(2)
+    return series, notes, system, scalar
+
+
+PEERS = ("odeint-", "sv-", "taylor-")
 
 
 def main(argv):
     if len(argv) not in (2, 3):
         sys.exit(__doc__)
-    series, notes, system = read(argv[1])
-    out = argv[2] if len(argv) == 3 else f"docs/figures/workprecision_{system}.png"
+    series, notes, system, scalar = read(argv[1])
+    digits = 16 if scalar == "double" else 50
+    out = argv[2] if len(argv) == 3 else f"docs/figures/workprecision_{system}_{digits}.png"
     fig, axes = plt.subplots(1, 2, figsize=(13, 6), sharex=True)
     cmap = plt.get_cmap("tab20")
     for i, (name, s) in enumerate(series.items()):
-        odeint = name.startswith("odeint-")
-        style = dict(ls="--", marker="s", color="k" if "velocity" in name else ("0.35" if "m4" in name else "0.6"),
-                     ms=4, lw=1.6) if odeint else dict(ls="-", marker="o", color=cmap(i % 20), ms=3, lw=1.2)
+        peer = name.startswith(PEERS)
+        style = dict(ls="--", marker="s", color=cmap(i % 20), ms=4, lw=1.6) if peer else dict(
+            ls="-", marker="o", color=cmap(i % 20), ms=3, lw=1.2)
         axes[0].loglog(s["cpu"], s["err"], label=name, **style)
         axes[1].loglog(s["cpu"], s["dE"], label=name, **style)
-    for target in (1e-10, 1e-6):
+    for target in ((1e-10, 1e-12) if digits == 16 else (1e-20, 1e-30)):
         axes[0].axhline(target, color="0.8", lw=0.8, zorder=0)
     axes[0].set_ylabel("final error |(q, p) - (q, p)_ref| at T")
     axes[1].set_ylabel("max |H - H0| over [0, T]")
@@ -64,7 +70,7 @@ def main(argv):
         ax.set_xlabel("CPU seconds")
         ax.grid(True, which="major", alpha=0.3)
     axes[1].legend(fontsize=7, loc="upper right")
-    fig.suptitle(f"work-precision, {system} (double; reference: closed form in cpp_bin_float_50)")
+    fig.suptitle(f"work-precision, {system} ({scalar}; reference: closed form in a wider scalar)")
     summary = [n for n in notes if n.startswith("  error")]
     if summary:
         fig.text(0.01, 0.005, "\n".join(s.strip() for s in summary), fontsize=7, va="bottom")

@@ -1,6 +1,7 @@
 #pragma once
 /// The integration loop of geomint-run for the free systems, over the shared stepper factory
 /// (tools/common): the schemes are instantiated there once for all tools.
+#include <ctime>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -85,6 +86,10 @@ int run_free(const options& o) {
   const newton_options<T> opt;
   T max_dE(0);
   tools::state_vector<T> q1 = q, p1 = p;
+  // CPU time of the stepping loop (steps, energy monitor and rows), printed to stderr as
+  // cpu_seconds=X so that outside tools can time a run without the process start-up.
+  timespec cpu_start{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu_start);
   for (long k = 0; k < o.steps; ++k) {
     step_status st = stepper->step(q, p, tau, q1, p1, opt);
     st.step = step;
@@ -102,6 +107,10 @@ int run_free(const options& o) {
     if (dE > max_dE) max_dE = dE;
     if (o.csv && (step % o.every == 0 || k + 1 == o.steps)) row();
   }
+  timespec cpu_end{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu_end);
+  std::cerr << "cpu_seconds="
+            << double(cpu_end.tv_sec - cpu_start.tv_sec) + double(cpu_end.tv_nsec - cpu_start.tv_nsec) * 1e-9 << '\n';
   if (!o.csv) {
     std::cout << "system " << o.system << ", scheme " << stepper->name() << ", tau " << tau << ", steps " << o.steps
               << ", digits " << std::numeric_limits<T>::digits10 << "\n";

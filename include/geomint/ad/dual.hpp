@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <type_traits>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -125,8 +126,22 @@ dual<T, N> chain(const dual<T, N>& x, const T& value, const T& slope) {
   return r;
 }
 
-template <class T, int N> dual<T, N> sin(const dual<T, N>& x) { using std::sin; using std::cos; return chain(x, T(sin(x.v)), T(cos(x.v))); }
-template <class T, int N> dual<T, N> cos(const dual<T, N>& x) { using std::sin; using std::cos; return chain(x, T(cos(x.v)), T(-sin(x.v))); }
+/// sin and cos together. Each level of a nested dual needs both of the level below, so
+/// separate sin and cos would evaluate the innermost sin and cos 2^depth times; jointly, once
+/// each (the values are the same; in multiprecision these evaluations dominate a step).
+template <class T>
+std::pair<T, T> sin_cos(const T& x) {
+  using std::cos;
+  using std::sin;
+  return {T(sin(x)), T(cos(x))};
+}
+template <class T, int N>
+std::pair<dual<T, N>, dual<T, N>> sin_cos(const dual<T, N>& x) {
+  const std::pair<T, T> sc = sin_cos(x.v);
+  return {chain(x, sc.first, sc.second), chain(x, sc.second, T(-sc.first))};
+}
+template <class T, int N> dual<T, N> sin(const dual<T, N>& x) { return sin_cos(x).first; }
+template <class T, int N> dual<T, N> cos(const dual<T, N>& x) { return sin_cos(x).second; }
 template <class T, int N> dual<T, N> tan(const dual<T, N>& x) {
   using std::tan;
   const T t = tan(x.v);

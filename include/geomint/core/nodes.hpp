@@ -183,11 +183,12 @@ constexpr T polish_root(T lo, T hi) {
 
 }  // namespace detail
 
-/// The m+1 nodes of a family on [0, 1], ascending. constexpr for rational (equispaced),
-/// double and long double; any Boost.Multiprecision type at run time, to full precision.
-template <class Family, int M, class T = double>
-constexpr std::array<T, M + 1> nodes() {
-  check_node_parameters<Family, M, T>();
+namespace detail {
+
+/// The node set without the range checks of `nodes` (also serves the Gauss rule with m + 1
+/// = max_floating_m + 1 points, core/quadrature.hpp).
+template <class Family, int M, class T>
+constexpr std::array<T, M + 1> node_set() {
   std::array<T, M + 1> c{};
   if constexpr (std::is_same_v<Family, equispaced>) {
     for (int a = 0; a <= M; ++a) c[static_cast<std::size_t>(a)] = T(a) / T(M);
@@ -203,12 +204,12 @@ constexpr std::array<T, M + 1> nodes() {
     constexpr int grid = M * M + 8;
     int found = 0;
     T left = T(0);
-    bool left_negative = detail::defining_polynomial<Family, M, T>(left).value < T(0);
+    bool left_negative = defining_polynomial<Family, M, T>(left).value < T(0);
     for (int k = 1; k < grid && found < lower; ++k) {
       const T right = T(k) / T(2 * grid);
-      const bool right_negative = detail::defining_polynomial<Family, M, T>(right).value < T(0);
-      if (detail::opposite_signs(left_negative, right_negative)) {
-        const T root = detail::polish_root<Family, M, T>(left, right);
+      const bool right_negative = defining_polynomial<Family, M, T>(right).value < T(0);
+      if (opposite_signs(left_negative, right_negative)) {
+        const T root = polish_root<Family, M, T>(left, right);
         ++found;
         c[static_cast<std::size_t>(found)] = root;
         c[static_cast<std::size_t>(M - found)] = T(1) - root;
@@ -219,6 +220,16 @@ constexpr std::array<T, M + 1> nodes() {
     if (found != lower) throw std::runtime_error("geomint: node scan missed a root");
   }
   return c;
+}
+
+}  // namespace detail
+
+/// The m+1 nodes of a family on [0, 1], ascending. constexpr for rational (equispaced),
+/// double and long double; any Boost.Multiprecision type at run time, to full precision.
+template <class Family, int M, class T = double>
+constexpr std::array<T, M + 1> nodes() {
+  check_node_parameters<Family, M, T>();
+  return detail::node_set<Family, M, T>();
 }
 
 /// The nodes as a constexpr variable (rational, double, long double).

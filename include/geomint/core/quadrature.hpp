@@ -21,12 +21,13 @@ struct quadrature_rule {
   std::array<T, Q> weights{};
 };
 
-/// The Q-point Gauss-Legendre rule on [0, 1] (Q = 1..max_floating_m - 1).
+/// The Q-point Gauss-Legendre rule on [0, 1] (Q = 1..max_floating_m).
 template <int Q, class T = double>
 constexpr quadrature_rule<T, Q> gauss_legendre_rule() {
   static_assert(Q >= 1, "geomint::gauss_legendre_rule: Q must be >= 1");
-  static_assert(Q + 1 <= max_floating_m, "geomint::gauss_legendre_rule: Q must be <= max_floating_m - 1 (15)");
-  const auto c = nodes<gauss_interior, Q + 1, T>();
+  static_assert(Q <= max_floating_m, "geomint::gauss_legendre_rule: Q must be <= max_floating_m (16)");
+  static_assert(!std::is_same_v<T, rational>, "geomint::gauss_legendre_rule: Gauss points are irrational");
+  const auto c = detail::node_set<gauss_interior, Q + 1, T>();
   quadrature_rule<T, Q> rule;
   for (int k = 0; k < Q; ++k) {
     const T g = c[static_cast<std::size_t>(k + 1)];

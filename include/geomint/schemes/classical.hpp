@@ -175,7 +175,7 @@ path_weights<T, 1, lagrange> linear_path_weights() {
 template <int M, class Family = gauss_lobatto, class Basis = lagrange>
 struct galerkin_vi {
   static_assert(M >= 1, "geomint::galerkin_vi: degree m must be >= 1");
-  static_assert(M + 1 <= max_floating_m, "geomint::galerkin_vi: m must be <= max_floating_m - 1 (15): the m-point Gauss rule uses the Gauss-interior nodes of degree m + 1");
+  static_assert(M <= max_floating_m, "geomint::galerkin_vi: m must be <= max_floating_m (16)");
   static_assert(node_family<Family>, "geomint::galerkin_vi: invalid node family");
   static_assert(basis_kind<Basis>, "geomint::galerkin_vi: Basis must be lagrange or bernstein");
   static constexpr int m = M;

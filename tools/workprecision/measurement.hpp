@@ -1,0 +1,216 @@
+#pragma once
+/// geomint-workprecision, measurement: for every method a sweep of runs (steps growing by
+/// sqrt 2, or tolerances by 10^(1/2)), each a timed pass of the stepping loop alone
+/// (CLOCK_PROCESS_CPUTIME_ID; short runs repeated and the fastest kept) and an untimed pass
+/// that monitors the energy; then the summary at the regime's target errors.
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "methods.hpp"
+
+namespace geomint::workprecision {
+
+/// The two regimes of --digits.
+struct regime {
+  int digits = 16;
+  double t_end = 1000;
+  double floor = 1e-13;  ///< a sweep stops below this final error
+  struct goal {
+    double error, ratio;
+  };
+  std::vector<goal> goals;     ///< best geomint / best peer CPU time at these errors
+  std::vector<double> others;  ///< further errors reported without a goal
+};
+
+struct settings {
+  std::string system = "pendulum";
+  int digits = 16;
+  bool csv = false;
+  std::optional<double> t_end;
+  std::optional<double> max_seconds;
+  std::vector<std::string> only;
+};
+
+struct result {
+  std::string method;
+  double tau = 0;
+  long steps = 0;
+  double cpu = 0;
+  double final_error = 0;
+  double max_energy_error = 0;
+};
+
+inline double cpu_now() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
+}
+
+/// |(q, p) - (q, p)_ref| (Euclidean) in the reference scalar R.
+template <class R, class T, int n>
+double phase_error(const arr<T, n>& q, const arr<T, n>& p, const analysis::closed_form_state<R, n>& ref) {
+  R sum(0);
+  for (std::size_t i = 0; i < std::size_t(n); ++i) {
+    const R dq = R(q[i]) - ref.q[i], dp = R(p[i]) - ref.p[i];
+    sum += dq * dq + dp * dp;
+  }
+  using std::sqrt;
+  return static_cast<double>(R(sqrt(sum)));
+}
+
+template <class P, class T, class R>
+std::optional<result> measure(const method<T, P::n>& m, long knob, const T& t_end,
+                              const analysis::closed_form_state<R, P::n>& ref) {
+  constexpr int n = P::n;
+  result r;
+  r.method = m.name;
+  arr<T, n> q{}, p{};
+  double best = std::numeric_limits<double>::infinity(), spent = 0;
+  long steps = 0;
+  for (int rep = 0; rep < 20; ++rep) {
+    q = P::template q0<T>();
+    p = P::template p0<T>();
+    const double t0 = cpu_now();
+    steps = m.run(knob, t_end, q, p, nullptr);
+    const double dt = cpu_now() - t0;
+    if (steps < 0) return std::nullopt;
+    best = std::min(best, dt);
+    spent += dt;
+    if (spent > 0.2 || (rep >= 2 && spent > 0.05)) break;
+  }
+  r.cpu = best;
+  r.steps = steps;
+  r.tau = static_cast<double>(T(t_end / T(std::max(1L, steps))));
+  r.final_error = phase_error<R, T, P::n>(q, p, ref);
+  arr<T, n> q2 = P::template q0<T>(), p2 = P::template p0<T>();
+  const T E0 = P::energy(q2, p2);
+  T worst(0);
+  const monitor_fn<T, n> monitor = [&](const arr<T, n>& qq, const arr<T, n>& pp) {
+    using std::abs;
+    const T d = abs(T(P::energy(qq, pp) - E0));
+    if (d > worst) worst = d;
+  };
+  if (m.run(knob, t_end, q2, p2, &monitor) < 0) return std::nullopt;
+  r.max_energy_error = static_cast<double>(worst);
+  return r;
+}
+
+/// CPU time at a target final error, interpolated log-log between the two measured points that
+/// bracket it (the first crossing from above); a single run (Taylor) counts if it is below.
+inline std::optional<double> cpu_at(const std::vector<result>& pts, double target) {
+  if (pts.size() == 1) {
+    if (pts[0].final_error <= target) return pts[0].cpu;
+    return std::nullopt;
+  }
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const result &a = pts[i], &b = pts[i + 1];
+    if (a.final_error >= target && b.final_error <= target && a.final_error > 0 && b.final_error > 0) {
+      if (a.final_error == b.final_error) return std::min(a.cpu, b.cpu);
+      const double s = (std::log(target) - std::log(a.final_error)) / (std::log(b.final_error) - std::log(a.final_error));
+      return std::exp(std::log(a.cpu) + s * (std::log(b.cpu) - std::log(a.cpu)));
+    }
+  }
+  if (!pts.empty() && pts.front().final_error <= target) return pts.front().cpu;  // first run already below
+  return std::nullopt;
+}
+
+template <class P, class T, class R>
+int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> all) {
+  const double t_end_d = o.t_end.value_or(g.t_end);
+  const double max_seconds = o.max_seconds.value_or(g.digits == 16 ? 1.0 : 4.0);
+  const T t_end = T(static_cast<long>(t_end_d)) == T(t_end_d) ? T(static_cast<long>(t_end_d)) : T(t_end_d);
+  const auto ref = P::template exact<R>(R(static_cast<long>(t_end_d)) == R(t_end_d) ? R(static_cast<long>(t_end_d)) : R(t_end_d));
+  if (!o.only.empty()) {
+    for (const auto& name : o.only)
+      if (std::none_of(all.begin(), all.end(), [&](const auto& m) { return m.name == name; }))
+        throw std::invalid_argument("unknown method '" + name + "' (see --help)");
+    std::erase_if(all, [&](const auto& m) { return std::find(o.only.begin(), o.only.end(), m.name) == o.only.end(); });
+  }
+  const std::string scalar = g.digits == 16 ? "double" : "cpp_bin_float_50";
+  if (o.csv) std::cout << "method,tau,steps,cpu_seconds,final_error,max_energy_error\n";
+  else
+    std::cout << "system " << P::name << ", T = " << t_end_d << ", " << scalar
+              << "; reference: closed form in a wider scalar\n"
+              << std::left << std::setw(36) << "method" << std::right << std::setw(12) << "tau" << std::setw(10)
+              << "steps" << std::setw(12) << "cpu [s]" << std::setw(12) << "final err" << std::setw(12) << "max dE"
+              << "\n";
+  std::map<std::string, std::vector<result>> by_method;
+  for (const auto& m : all) {
+    long knob = m.first;
+    double prev_error = std::numeric_limits<double>::infinity();
+    int worse = 0;
+    for (int k = 0; k < 80; ++k) {
+      const auto r = measure<P, T, R>(m, knob, t_end, ref);
+      if (!r) {
+        std::cerr << "geomint-workprecision: " << m.name << " failed at knob " << knob << " (skipped)\n";
+        if (m.kind == knob_kind::tolerance) break;  // the controller met round-off
+      } else {
+        by_method[m.name].push_back(*r);
+        if (o.csv)
+          std::cout << std::setprecision(6) << r->method << ',' << r->tau << ',' << r->steps << ',' << r->cpu << ','
+                    << r->final_error << ',' << r->max_energy_error << '\n'
+                    << std::flush;
+        else
+          std::cout << std::left << std::setw(36) << r->method << std::right << std::setprecision(4) << std::setw(12)
+                    << r->tau << std::setw(10) << r->steps << std::setw(12) << r->cpu << std::setw(12) << r->final_error
+                    << std::setw(12) << r->max_energy_error << "\n"
+                    << std::flush;
+        if (m.kind == knob_kind::none || r->final_error < g.floor || r->cpu > max_seconds) break;
+        // Round-off floor: two runs without improvement (adaptive error control is erratic:
+        // four), or a tolerance below the scalar's precision.
+        if (m.kind == knob_kind::tolerance && knob >= 2 * (g.digits - 2)) break;
+        if (r->final_error >= prev_error && r->final_error < 1e-6) {
+          if (++worse >= (m.kind == knob_kind::tolerance ? 4 : 2)) break;
+        } else {
+          worse = 0;
+        }
+        prev_error = std::min(prev_error, r->final_error);
+      }
+      if (m.kind == knob_kind::tolerance) ++knob;  // tolerance / 10^(1/2)
+      else knob = std::max(knob + 1, std::lround(double(knob) * std::sqrt(2.0)));
+    }
+  }
+  const char* pre = o.csv ? "# " : "";
+  std::cout << pre << "summary (" << P::name << ", " << scalar << ", T = " << t_end_d
+            << "): CPU seconds at final error, log-log interpolation between measured points\n";
+  auto report = [&](double target, std::optional<double> goal) {
+    std::optional<double> best_g, best_p;
+    std::string name_g = "none", name_p = "none";
+    for (const auto& m : all) {
+      const auto c = cpu_at(by_method[m.name], target);
+      if (!c) continue;
+      auto& best = m.peer ? best_p : best_g;
+      auto& name = m.peer ? name_p : name_g;
+      if (!best || *c < *best) {
+        best = c;
+        name = m.name;
+      }
+    }
+    std::cout << pre << "  error " << std::setprecision(0) << std::scientific << target << std::defaultfloat
+              << std::setprecision(4) << ": best geomint " << name_g << " ";
+    if (best_g) std::cout << *best_g << " s";
+    else std::cout << "n/a";
+    std::cout << ", best peer " << name_p << " ";
+    if (best_p) std::cout << *best_p << " s";
+    else std::cout << "n/a";
+    if (best_g && best_p) {
+      const double ratio = *best_g / *best_p;
+      std::cout << ", ratio " << std::setprecision(3) << ratio;
+      if (goal) std::cout << " (goal <= " << *goal << ": " << (ratio <= *goal ? "met" : "not met") << ")";
+    }
+    std::cout << "\n";
+  };
+  for (const auto& goal : g.goals) report(goal.error, goal.ratio);
+  for (double e : g.others) report(e, std::nullopt);
+  return 0;
+}
+
+}  // namespace geomint::workprecision

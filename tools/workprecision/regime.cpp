@@ -1,0 +1,96 @@
+/// geomint-workprecision: the method list of one (problem, digits) pair; one translation unit
+/// each (GEOMINT_WP_PROBLEM, GEOMINT_WP_DIGITS) so that they build in parallel.
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+// Boost 1.74's explicit_error_generic_rk copy constructor reads members that its default
+// constructor leaves empty (resized before use); GCC 12 flags the copy inside
+// controlled_runge_kutta's constructor. The warning is in Boost's header, not here.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
+#include "measurement.hpp"
+#include "regimes.hpp"
+
+/// Odeint's norm_inf descends value_type chains; a Boost.Multiprecision number is its own end.
+template <>
+struct boost::numeric::odeint::detail::extract_value_type<boost::multiprecision::cpp_bin_float_50, void> {
+  using type = boost::multiprecision::cpp_bin_float_50;
+};
+
+namespace geomint::workprecision {
+namespace {
+
+#define GEOMINT_WP_CAT2(a, b) a##b
+#define GEOMINT_WP_CAT(a, b) GEOMINT_WP_CAT2(a, b)
+using P = GEOMINT_WP_CAT(GEOMINT_WP_PROBLEM, _problem);
+
+/// The methods and first knobs (chosen so that the first error is near 1e-4 in double over
+/// T = 1000 and near 1e-12 in 50 digits over T = 100).
+template <class T>
+std::vector<method<T, P::n>> methods_16() {
+  using namespace geomint;
+  std::vector<method<T, P::n>> all;
+  all.push_back(geomint_method<P, trapezoidal_vi, T>("trapezoidal", 20000));
+  all.push_back(geomint_method<P, midpoint_vi, T>("midpoint", 20000));
+  all.push_back(geomint_method<P, galerkin_vi<4>, T>("galerkin-m4", 500));
+  all.push_back(geomint_method<P, galerkin_vi<8>, T>("galerkin-m8", 300));
+  all.push_back(geomint_method<P, galerkin_vi<16>, T>("galerkin-m16", 250));
+  all.push_back(geomint_method<P, lpf<4, gauss_interior>, T>("lpf-m4-gauss-interior", 2000));
+  all.push_back(geomint_method<P, lpf<6, gauss_interior>, T>("lpf-m6-gauss-interior", 500));
+  all.push_back(geomint_method<P, lpf<8, gauss_interior>, T>("lpf-m8-gauss-interior", 500));
+  all.push_back(geomint_method<P, lpf<10, gauss_interior>, T>("lpf-m10-gauss-interior", 300));
+  all.push_back(geomint_method<P, lpf<12, gauss_interior>, T>("lpf-m12-gauss-interior", 300));
+  all.push_back(geomint_method<P, lpf<16, gauss_interior>, T>("lpf-m16-gauss-interior", 250));
+  all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
+      "odeint-symplectic_rkn_sb3a_mclachlan", 4000));
+  all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
+      "odeint-symplectic_rkn_sb3a_m4_mclachlan", 4000));
+  all.push_back(odeint_verlet<P, T>("odeint-velocity_verlet", 20000));
+  all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 8));
+  all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 8));
+  all.push_back(composition_method<P, T>("sv-yoshida6-s7", analysis::symmetric_composition<T>::yoshida6(), 5000));
+  all.push_back(composition_method<P, T>("sv-kahan-li8-s17", analysis::symmetric_composition<T>::kahan_li8(), 2000));
+  all.push_back(composition_method<P, T>("sv-sofroniou-spaletta10-s35",
+                                         analysis::symmetric_composition<T>::sofroniou_spaletta10(), 1000));
+  all.push_back(taylor_method<P, T>("taylor-series"));
+  return all;
+}
+
+template <class T>
+std::vector<method<T, P::n>> methods_50() {
+  using namespace geomint;
+  std::vector<method<T, P::n>> all;
+  all.push_back(geomint_method<P, galerkin_vi<8>, T>("galerkin-m8", 200));
+  all.push_back(geomint_method<P, galerkin_vi<12>, T>("galerkin-m12", 100));
+  all.push_back(geomint_method<P, galerkin_vi<16>, T>("galerkin-m16", 100));
+  all.push_back(geomint_method<P, lpf<6, gauss_interior>, T>("lpf-m6-gauss-interior", 400));
+  all.push_back(geomint_method<P, lpf<8, gauss_interior>, T>("lpf-m8-gauss-interior", 200));
+  all.push_back(geomint_method<P, lpf<10, gauss_interior>, T>("lpf-m10-gauss-interior", 100));
+  all.push_back(geomint_method<P, lpf<12, gauss_interior>, T>("lpf-m12-gauss-interior", 100));
+  all.push_back(geomint_method<P, lpf<16, gauss_interior>, T>("lpf-m16-gauss-interior", 100));
+  all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
+      "odeint-symplectic_rkn_sb3a_m4_mclachlan", 10000));
+  all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 24));
+  all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 24));
+  all.push_back(composition_method<P, T>("sv-yoshida6-s7", analysis::symmetric_composition<T>::yoshida6(), 4000));
+  all.push_back(composition_method<P, T>("sv-kahan-li8-s17", analysis::symmetric_composition<T>::kahan_li8(), 1000));
+  all.push_back(composition_method<P, T>("sv-sofroniou-spaletta10-s35",
+                                         analysis::symmetric_composition<T>::sofroniou_spaletta10(), 400));
+  all.push_back(taylor_method<P, T>("taylor-series"));
+  return all;
+}
+
+}  // namespace
+
+int GEOMINT_WP_CAT(GEOMINT_WP_CAT(GEOMINT_WP_CAT(run_, GEOMINT_WP_PROBLEM), _), GEOMINT_WP_DIGITS)(const settings& o) {
+#if GEOMINT_WP_DIGITS == 16
+  return run_sweeps<P, double, boost::multiprecision::cpp_bin_float_50>(o, regime_16(), methods_16<double>());
+#else
+  using mp = boost::multiprecision::cpp_bin_float_50;
+  return run_sweeps<P, mp, boost::multiprecision::cpp_bin_float_100>(o, regime_50(), methods_50<mp>());
+#endif
+}
+
+}  // namespace geomint::workprecision
