@@ -30,14 +30,16 @@ struct big_integer {
   bool negative = false;    ///< never true for zero
 
   constexpr big_integer() = default;
-  /// Any 64-bit integer; implicit, so that mixed arithmetic reads naturally.
-  constexpr big_integer(std::int64_t v) {  // NOLINT(google-explicit-constructor)
-    const std::uint64_t mag = v < 0 ? std::uint64_t(0) - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
-    limb[0] = static_cast<std::uint32_t>(mag);
-    limb[1] = static_cast<std::uint32_t>(mag >> 32);
-    size = limb[1] != 0 ? 2 : (limb[0] != 0 ? 1 : 0);
-    negative = v < 0;
+  /// Any 64-bit integer; implicit, so that mixed arithmetic reads naturally. Every member is set
+  /// in the initialiser list (no assignment in the body): Clang 14 rejects such assignments
+  /// in constant evaluation of array elements, and GCC 12 at -O1 and above lost them.
+  constexpr big_integer(std::int64_t v)  // NOLINT(google-explicit-constructor)
+      : limb{low_limb(v), high_limb(v)}, size(high_limb(v) != 0 ? 2 : (low_limb(v) != 0 ? 1 : 0)), negative(v < 0) {}
+  static constexpr std::uint64_t magnitude_of(std::int64_t v) {
+    return v < 0 ? std::uint64_t(0) - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
   }
+  static constexpr std::uint32_t low_limb(std::int64_t v) { return static_cast<std::uint32_t>(magnitude_of(v)); }
+  static constexpr std::uint32_t high_limb(std::int64_t v) { return static_cast<std::uint32_t>(magnitude_of(v) >> 32); }
 
   constexpr bool is_zero() const { return size == 0; }
   constexpr int sign() const { return size == 0 ? 0 : (negative ? -1 : 1); }

@@ -22,7 +22,9 @@ struct big_rational {
   big_integer<L> num{};
   big_integer<L> den{1};
 
-  constexpr big_rational() = default;
+  /// Zero. User-provided (not defaulted): GCC 12 at -O2 zero-fills value-initialised arrays of
+  /// a class with a defaulted constructor instead of applying den{1}.
+  constexpr big_rational() : num(), den(1) {}
   constexpr big_rational(std::int64_t n) : num(n) {}  // NOLINT(google-explicit-constructor)
   constexpr big_rational(const rational& r) : num(r.num), den(r.den) {}  // NOLINT(google-explicit-constructor)
   constexpr big_rational(const big_integer<L>& n, const big_integer<L>& d) : num(n), den(d) {
