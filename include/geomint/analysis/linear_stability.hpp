@@ -51,8 +51,11 @@ namespace detail {
 /// Polynomials in z with exact rational coefficients (degree bound 2 max_stability_degree + 2).
 struct qpoly {
   static constexpr int capacity = 2 * max_stability_degree + 3;
-  exact_number c[capacity]{};
+  exact_number c[capacity];
   int degree = -1;
+  constexpr qpoly() {
+    for (exact_number& x : c) x = exact_number(0);  // explicitly: see stage_vector (rkn_tableau.hpp)
+  }
   constexpr void trim() {
     degree = capacity - 1;
     while (degree >= 0 && c[degree].num.is_zero()) --degree;
@@ -108,10 +111,10 @@ constexpr qpoly z_times(const qpoly& p) {
 }
 
 /// det [[I + z A, u], [v^T, 0]] (bordered = true) or det(I + z A) by Bareiss over Q[z].
-constexpr qpoly bordered_determinant(const exact_rkn_tableau& t, const stage_vector* u, const exact_number* v) {
+constexpr qpoly bordered_determinant(const exact_rkn_tableau& t, bool bordered, const stage_vector& u, const exact_number* v) {
   const int s = t.stages;
-  const int n = u ? s + 1 : s;
-  qpoly a[max_exact_stages + 1][max_exact_stages + 1]{};
+  const int n = bordered ? s + 1 : s;
+  qpoly a[max_exact_stages + 1][max_exact_stages + 1];
   for (int i = 0; i < s; ++i) {
     for (int j = 0; j < s; ++j) {
       qpoly e;
@@ -120,9 +123,9 @@ constexpr qpoly bordered_determinant(const exact_rkn_tableau& t, const stage_vec
       e.trim();
       a[i][j] = e;
     }
-    if (u) a[i][s] = constant_poly((*u)[i]);
+    if (bordered) a[i][s] = constant_poly(u[i]);
   }
-  if (u) {
+  if (bordered) {
     for (int j = 0; j < s; ++j) a[s][j] = constant_poly(v[j]);
     a[s][s] = qpoly{};
   }
@@ -164,11 +167,11 @@ constexpr stability_integer factorial(int n) {
 /// The exact two-step form, order of R, phase lag of a tableau.
 constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
   using detail::qpoly;
-  const qpoly D = detail::bordered_determinant(t, nullptr, nullptr);
-  const qpoly E_bbar_one = detail::bordered_determinant(t, &t.one, t.bbar);
-  const qpoly E_bbar_c = detail::bordered_determinant(t, &t.c, t.bbar);
-  const qpoly E_b_one = detail::bordered_determinant(t, &t.one, t.b);
-  const qpoly E_b_c = detail::bordered_determinant(t, &t.c, t.b);
+  const qpoly D = detail::bordered_determinant(t, false, t.one, t.b);
+  const qpoly E_bbar_one = detail::bordered_determinant(t, true, t.one, t.bbar);
+  const qpoly E_bbar_c = detail::bordered_determinant(t, true, t.c, t.bbar);
+  const qpoly E_b_one = detail::bordered_determinant(t, true, t.one, t.b);
+  const qpoly E_b_c = detail::bordered_determinant(t, true, t.c, t.b);
   // tr M = (2 D + z (E(bbar, 1) + E(b, c))) / D.
   const qpoly trace_num = D + D + detail::z_times(E_bbar_one + E_b_c);
   // det M D^2 = (D + z E(bbar,1)) (D + z E(b,c)) - (D + z E(bbar,c)) z E(b,1).

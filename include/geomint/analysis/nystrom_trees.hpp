@@ -17,8 +17,8 @@
 /// leaf) = 1, gamma(meagre over w) = (|w| + 1) gamma(w). The symmetry sigma(u) = prod over
 /// distinct son types of (multiplicity)! sigma(son)^multiplicity enters the error coefficients.
 ///
-/// Number of trees with n vertices, n = 1, 2, ...: 1, 1, 2, 3, 6, 10, 20, 36, 72, 137, 275, 546,
-/// 1123, 2291, 4753, 9846, 20618: the number of lone-child-avoiding (series-reduced planted)
+/// Number of trees with n vertices, n = 1, 2, ...: 1, 1, 2, 3, 6, 10, 20, 36, 72, 137, 275, 541,
+/// 1098, 2208, 4521, 9240, 19084: the number of lone-child-avoiding (series-reduced planted)
 /// rooted trees with n + 2 vertices, OEIS A001678 (contract every meagre vertex with its son and
 /// add a planted root), checked in tests/analysis/test_nystrom_trees.cpp.
 ///
@@ -33,7 +33,7 @@
 
 namespace geomint {
 
-/// Largest tree size the generator accepts (the counts above; 39 740 trees in all).
+/// Largest tree size the generator accepts (the counts above; 37 255 trees in all).
 inline constexpr int max_nystrom_tree_size = 17;
 
 /// One tree of the table. Structural.

@@ -63,7 +63,7 @@ constexpr order_summary evaluate_order_conditions(const exact_rkn_tableau& t, in
   nystrom_tree_table table;
   std::vector<stage_vector> psi;
   std::vector<stage_vector> a_psi;  // A Psi(w), for the sons meagre-over-w
-  std::vector<bool> have_a_psi;
+  std::vector<char> have_a_psi;  // not vector<bool>: not constexpr in Clang 14
   order_summary out;
   out.tree_limit = max_order;
   auto condition = [&](int index, rkn_component component, int order, bool& failed) {
@@ -87,7 +87,7 @@ constexpr order_summary evaluate_order_conditions(const exact_rkn_tableau& t, in
     extend_nystrom_trees(table);
     psi.resize(table.trees.size());
     a_psi.resize(table.trees.size());
-    have_a_psi.resize(table.trees.size(), false);
+    have_a_psi.resize(table.trees.size(), 0);
     // Stage weights of the trees of size k.
     for (int i = table.first[static_cast<std::size_t>(k)]; i < table.first[static_cast<std::size_t>(k) + 1]; ++i) {
       const nystrom_tree& u = table.trees[static_cast<std::size_t>(i)];
@@ -100,7 +100,7 @@ constexpr order_summary evaluate_order_conditions(const exact_rkn_tableau& t, in
         const std::size_t w = static_cast<std::size_t>(u.son - 1);
         if (!have_a_psi[w]) {
           a_psi[w] = t.apply_a(psi[w]);
-          have_a_psi[w] = true;
+          have_a_psi[w] = 1;
         }
         y = &a_psi[w];
       }

@@ -62,8 +62,16 @@ enum class stage_basis {
 };
 
 /// A stage vector: s exact coordinates.
+///
+/// The structs holding arrays of exact numbers assign every element in their constructors:
+/// GCC 12 (constant evaluation and code generation alike) otherwise produced zero-filled
+/// elements (zero denominators) for default-initialised array elements of these aggregates.
 struct stage_vector {
-  exact_number v[max_exact_stages]{};
+  exact_number v[max_exact_stages];
+  constexpr stage_vector() {
+    for (exact_number& x : v) x = exact_number(0);  // explicitly: see above
+  }
+  friend constexpr bool operator==(const stage_vector&, const stage_vector&) = default;
   constexpr const exact_number& operator[](int k) const { return v[k]; }
   constexpr exact_number& operator[](int k) { return v[k]; }
 };
@@ -72,12 +80,21 @@ struct stage_vector {
 struct exact_rkn_tableau {
   int stages = 0;                                        ///< s
   stage_basis basis = stage_basis::values;
-  exact_number node_polynomial[max_exact_stages + 1]{};  ///< monic N, ascending (monomial basis only)
-  exact_number a[max_exact_stages][max_exact_stages]{};  ///< the operator A on coordinates: (A v)_i = sum_j a[i][j] v_j
-  exact_number bbar[max_exact_stages]{};                 ///< the functional bbar: bbar(v) = sum_k bbar[k] v_k
-  exact_number b[max_exact_stages]{};                    ///< the functional b
+  exact_number node_polynomial[max_exact_stages + 1];  ///< monic N, ascending (monomial basis only)
+  exact_number a[max_exact_stages][max_exact_stages];  ///< the operator A on coordinates: (A v)_i = sum_j a[i][j] v_j
+  exact_number bbar[max_exact_stages];                 ///< the functional bbar: bbar(v) = sum_k bbar[k] v_k
+  exact_number b[max_exact_stages];                    ///< the functional b
   stage_vector c{};                                      ///< the vector of nodes (x mod N, or c itself)
   stage_vector one{};                                    ///< the vector of ones
+
+  constexpr exact_rkn_tableau() {  // every element assigned explicitly: see stage_vector
+    for (int i = 0; i < max_exact_stages; ++i) {
+      for (int j = 0; j < max_exact_stages; ++j) a[i][j] = exact_number(0);
+      bbar[i] = exact_number(0);
+      b[i] = exact_number(0);
+    }
+    for (exact_number& x : node_polynomial) x = exact_number(0);
+  }
 
   /// Componentwise product of stage vectors (product modulo N in the monomial basis).
   constexpr stage_vector multiply(const stage_vector& u, const stage_vector& w) const {
@@ -86,7 +103,7 @@ struct exact_rkn_tableau {
       for (int i = 0; i < stages; ++i) r[i] = u[i] * w[i];
       return r;
     }
-    exact_number p[2 * max_exact_stages]{};
+    exact_number p[2 * max_exact_stages];
     for (int i = 0; i < stages; ++i) {
       if (u[i].num.is_zero()) continue;
       for (int j = 0; j < stages; ++j)
@@ -137,7 +154,10 @@ namespace detail {
 /// Polynomial coefficients (ascending) of up to degree 2 max_exact_stages + 2.
 struct exact_poly_buffer {
   static constexpr int capacity = 2 * max_exact_stages + 3;
-  exact_number c[capacity]{};
+  exact_number c[capacity];
+  constexpr exact_poly_buffer() {
+    for (exact_number& x : c) x = exact_number(0);  // explicitly: see stage_vector
+  }
 };
 
 /// The collocation tableau (LPF interior nodes) on the roots of a monic N of degree s.
@@ -148,7 +168,7 @@ constexpr exact_rkn_tableau collocation_tableau(const exact_number* monic_n, int
   for (int k = 0; k <= s; ++k) t.node_polynomial[k] = monic_n[k];
   for (int k = 0; k < s; ++k) {
     // x^k -> int_0^x (x - u) u^k du = x^{k+2} / ((k+1)(k+2)), reduced modulo N.
-    exact_number p[2 * max_exact_stages + 2]{};
+    exact_number p[2 * max_exact_stages + 2];
     p[k + 2] = detail::fraction(1, (k + 1) * (k + 2));
     t.reduce(p, k + 2);
     for (int i = 0; i < s; ++i) t.a[i][k] = p[i];
@@ -171,9 +191,9 @@ constexpr exact_rkn_tableau galerkin_tableau(const exact_number* monic_n, int s)
   t.stages = s;
   t.basis = stage_basis::monomial;
   for (int k = 0; k <= s; ++k) t.node_polynomial[k] = monic_n[k];
-  exact_number rk[max_exact_stages][max_exact_stages]{};
+  exact_number rk[max_exact_stages][max_exact_stages];
   for (int k = 0; k < s; ++k) {
-    exact_number p[2 * max_exact_stages + 2]{};
+    exact_number p[2 * max_exact_stages + 2];
     p[k + 1] = detail::fraction(1, k + 1);
     t.reduce(p, k + 1);
     for (int i = 0; i < s; ++i) rk[i][k] = p[i];
@@ -209,10 +229,10 @@ constexpr int make_monic(exact_number* p, int top) {
 /// recurrences in exact arithmetic); derivative_of_legendre: P'_n(y) instead.
 enum class orthogonal_kind { legendre, legendre_derivative, chebyshev_u };
 constexpr int shifted_orthogonal(orthogonal_kind kind, int n, exact_number* out) {
-  exact_number prev[max_exact_stages + 3]{}, cur[max_exact_stages + 3]{};
+  exact_number prev[max_exact_stages + 3], cur[max_exact_stages + 3];
   // P_0 = 1, P_1 = y (Legendre) / U_1 = 2y (Chebyshev); y = 2x - 1.
   // For P'_n: (n) P_n = ... use P'_{k+1} = (k+1) P_k + y P'_k: track P and P'.
-  exact_number dprev[max_exact_stages + 3]{}, dcur[max_exact_stages + 3]{};
+  exact_number dprev[max_exact_stages + 3], dcur[max_exact_stages + 3];
   cur[0] = exact_number(1);
   auto times_y = [](const exact_number* v, exact_number* r, int deg) {
     for (int k = deg + 1; k >= 0; --k) {
@@ -222,13 +242,13 @@ constexpr int shifted_orthogonal(orthogonal_kind kind, int n, exact_number* out)
     }
   };
   for (int k = 0; k < n; ++k) {
-    exact_number yc[max_exact_stages + 3]{}, next[max_exact_stages + 3]{}, dnext[max_exact_stages + 3]{};
+    exact_number yc[max_exact_stages + 3], next[max_exact_stages + 3], dnext[max_exact_stages + 3];
     times_y(cur, yc, k);
     if (kind == orthogonal_kind::chebyshev_u) {
       for (int j = 0; j <= k + 1; ++j) next[j] = exact_number(2) * yc[j] - prev[j];
     } else {
       // (k+1) P_{k+1} = (2k+1) y P_k - k P_{k-1};  P'_{k+1} = (k+1) P_k + y P'_k.
-      exact_number ydc[max_exact_stages + 3]{};
+      exact_number ydc[max_exact_stages + 3];
       times_y(dcur, ydc, k);
       for (int j = 0; j <= k + 1; ++j) {
         next[j] = (exact_number(2 * k + 1) * yc[j] - exact_number(k) * prev[j]) / exact_number(k + 1);
@@ -353,7 +373,7 @@ constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array
   if (p.c[S].num.is_zero()) throw std::domain_error("geomint::collocation_tableau_from_polynomial: the leading coefficient is zero");
   detail::make_monic(p.c, S);
   // Simple roots: the Euclidean remainder sequence of N and N' ends in a nonzero constant.
-  exact_number u[max_exact_stages + 1]{}, w[max_exact_stages + 1]{};
+  exact_number u[max_exact_stages + 1], w[max_exact_stages + 1];
   int du = S, dw = S - 1;
   for (int k = 0; k <= S; ++k) u[k] = p.c[k];
   for (int k = 1; k <= S; ++k) w[k - 1] = p.c[k] * exact_number(k);

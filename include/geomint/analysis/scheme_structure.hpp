@@ -29,8 +29,14 @@ struct symplecticity_result {
   bool symplectic = false;
   bool first_condition = false;   ///< bbar_i = b_i (1 - c_i)
   bool second_condition = false;  ///< b_i (bbar_j - a_ij) = b_j (bbar_i - a_ji)
-  exact_number first_defect[max_exact_stages]{};                     ///< d1 on the basis
-  exact_number second_defect[max_exact_stages][max_exact_stages]{};  ///< d2 on the basis
+  exact_number first_defect[max_exact_stages];                     ///< d1 on the basis
+  exact_number second_defect[max_exact_stages][max_exact_stages];  ///< d2 on the basis
+  constexpr symplecticity_result() {  // every element assigned explicitly: see stage_vector
+    for (int i = 0; i < max_exact_stages; ++i) {
+      first_defect[i] = exact_number(0);
+      for (int j = 0; j < max_exact_stages; ++j) second_defect[i][j] = exact_number(0);
+    }
+  }
   friend constexpr bool operator==(const symplecticity_result&, const symplecticity_result&) = default;
 };
 
@@ -38,9 +44,16 @@ struct symplecticity_result {
 struct symmetry_result {
   bool symmetric = false;
   bool nodes_symmetric = false;  ///< the stage permutation c -> 1 - c exists
-  exact_number a_defect[max_exact_stages][max_exact_stages]{};  ///< A* - P A P
-  exact_number bbar_defect[max_exact_stages]{};                 ///< bbar* - bbar P
-  exact_number b_defect[max_exact_stages]{};                    ///< b - b P
+  exact_number a_defect[max_exact_stages][max_exact_stages];  ///< A* - P A P
+  exact_number bbar_defect[max_exact_stages];                 ///< bbar* - bbar P
+  exact_number b_defect[max_exact_stages];                    ///< b - b P
+  constexpr symmetry_result() {  // every element assigned explicitly: see stage_vector
+    for (int i = 0; i < max_exact_stages; ++i) {
+      bbar_defect[i] = exact_number(0);
+      b_defect[i] = exact_number(0);
+      for (int j = 0; j < max_exact_stages; ++j) a_defect[i][j] = exact_number(0);
+    }
+  }
   friend constexpr bool operator==(const symmetry_result&, const symmetry_result&) = default;
 };
 
@@ -86,7 +99,7 @@ constexpr bool reflection_matrix(const exact_rkn_tableau& t, exact_number (&P)[m
     return true;
   }
   // N(1 - x) = (-1)^s N(x)?  N(1 - x) = sum_k n_k (1 - x)^k.
-  exact_number reflected[max_exact_stages + 1]{};
+  exact_number reflected[max_exact_stages + 1];
   for (int k = 0; k <= s; ++k) {
     exact_number binom(1);  // C(k, j) (-1)^j
     for (int j = 0; j <= k; ++j) {
@@ -113,7 +126,7 @@ constexpr bool reflection_matrix(const exact_rkn_tableau& t, exact_number (&P)[m
 constexpr symmetry_result symmetry(const exact_rkn_tableau& t) {
   symmetry_result r;
   const int s = t.stages;
-  exact_number P[max_exact_stages][max_exact_stages]{};
+  exact_number P[max_exact_stages][max_exact_stages];
   r.nodes_symmetric = detail::reflection_matrix(t, P);
   if (!r.nodes_symmetric) return r;
   auto matrix_times = [s](const exact_number (&X)[max_exact_stages][max_exact_stages],
@@ -127,7 +140,7 @@ constexpr symmetry_result symmetry(const exact_rkn_tableau& t) {
         Z[i][j] = sum;
       }
   };
-  exact_number AP[max_exact_stages][max_exact_stages]{}, PAP[max_exact_stages][max_exact_stages]{};
+  exact_number AP[max_exact_stages][max_exact_stages], PAP[max_exact_stages][max_exact_stages];
   matrix_times(t.a, P, AP);
   matrix_times(P, AP, PAP);
   r.symmetric = true;

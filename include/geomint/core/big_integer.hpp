@@ -25,14 +25,18 @@ namespace geomint {
 template <int L>
 struct big_integer {
   static_assert(L >= 2, "geomint::big_integer needs at least two limbs");
-  std::uint32_t limb[L]{};  ///< magnitude (C arrays: far cheaper than std::array in constant evaluation)
-  int size = 0;             ///< limbs in use; limb[size - 1] != 0 unless the value is 0
-  bool negative = false;    ///< never true for zero
+  std::uint32_t limb[L];  ///< magnitude (C arrays: far cheaper than std::array in constant evaluation)
+  int size;               ///< limbs in use; limb[size - 1] != 0 unless the value is 0
+  bool negative;          ///< never true for zero
 
-  constexpr big_integer() = default;
+  /// Zero. The members have no default member initialisers: every constructor sets all of them
+  /// in its initialiser list. (With `limb[L]{}` as a default member initialiser, GCC 12 lost the
+  /// initialiser list's limbs of big_integer(std::int64_t) inside larger constant-initialised
+  /// objects, leaving denominators of big_rational equal to a non-normalised zero.)
+  constexpr big_integer() : limb{}, size(0), negative(false) {}
   /// Any 64-bit integer; implicit, so that mixed arithmetic reads naturally. Every member is set
-  /// in the initialiser list (no assignment in the body): Clang 14 rejects such assignments
-  /// in constant evaluation of array elements, and GCC 12 at -O1 and above lost them.
+  /// in the initialiser list (no assignment in the body, which Clang 14 rejects in constant
+  /// evaluation of array elements).
   constexpr big_integer(std::int64_t v)  // NOLINT(google-explicit-constructor)
       : limb{low_limb(v), high_limb(v)}, size(high_limb(v) != 0 ? 2 : (low_limb(v) != 0 ? 1 : 0)), negative(v < 0) {}
   static constexpr std::uint64_t magnitude_of(std::int64_t v) {
