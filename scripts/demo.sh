@@ -19,7 +19,7 @@ echo "core: nodes, Lagrange bases and D1/D2 weights for m = 2..6, four node fami
 echo "      -> $out/core/nodes_bases_weights.txt ($(wc -l < "$out/core/nodes_bases_weights.txt") lines); m = 2 equispaced:"
 sed -n '/equispaced, m = 2/,/equispaced, m = 3/p' "$out/core/nodes_bases_weights.txt" | sed '$d' | sed 's/^/      /'
 
-for part in lpf constraints analysis beam; do
+for part in lpf constraints analysis schemes beam; do
   if [ -f "scripts/demo_$part.sh" ]; then
     echo "=== $part ==="
     bash "scripts/demo_$part.sh" "$build" "$out"

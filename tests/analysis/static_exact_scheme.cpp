@@ -25,7 +25,7 @@ namespace {
 using geomint::exact_rational;
 using geomint::exact_two_step_scheme;
 using geomint::rational;
-using big = geomint::detail::big_int<geomint::detail::exact_limbs>;
+using big = geomint::big_integer<geomint::detail::exact_limbs>;
 
 /// R = P/Q has exactly these ascending coefficients (in s = tau^2).
 constexpr bool has_coefficients(const exact_two_step_scheme& r, std::initializer_list<std::int64_t> p,
@@ -50,7 +50,7 @@ constexpr bool is_reduced(const exact_two_step_scheme& r) {
   for (int k = 0; k <= r.numerator_degree; ++k) g = geomint::detail::gcd64(g, r.numerator[static_cast<std::size_t>(k)]);
   for (int k = 0; k <= r.denominator_degree; ++k) g = geomint::detail::gcd64(g, r.denominator[static_cast<std::size_t>(k)]);
   if (g != 1 || r.denominator[0] <= 0) return false;
-  using poly = geomint::detail::zpoly<geomint::detail::exact_limbs, 2 * geomint::max_exact_m>;
+  using poly = geomint::integer_polynomial<geomint::detail::exact_limbs, 2 * geomint::max_exact_m>;
   poly P, Q;
   for (int k = 0; k <= r.numerator_degree; ++k) P[k] = big(r.numerator[static_cast<std::size_t>(k)]);
   for (int k = 0; k <= r.denominator_degree; ++k) Q[k] = big(r.denominator[static_cast<std::size_t>(k)]);
@@ -191,7 +191,7 @@ static_assert(division_identity(from_limbs({0xFFFFFFFEU, 0xFFFFFFFEU, 0x80000001
                                 from_limbs({0xFFFFFFFEU, 0U, 0x80000001U})));
 static_assert(from_limbs({0xFFFFFFFEU, 0U, 0x80000001U}).size == 3);
 static_assert(big(-7) / big(2) == big(-3) && big(-7) % big(2) == big(-1) && big(7) % big(-2) == big(1));
-static_assert(geomint::detail::exact_quotient(qa * qb, qb) == qa);
+static_assert(geomint::exact_quotient(qa * qb, qb) == qa);
 static_assert(big(5) / big(9) == big(0) && big(5) % big(9) == big(5));
 // gcd: gcd(a c, b c) = c gcd(a, b) with coprime a, b.
 static_assert(gcd(qa * big(3) * big(1000003), big(3) * big(1000003) * big(10007)) ==
@@ -214,7 +214,7 @@ static_assert(!exact_rational(power_of_two(80), big(3)).fits_rational() && third
 static_assert(exact_rational(power_of_two(80), big(3)) > rational(9223372036854775807LL));
 
 // Polynomials over Z: exact division and the gcd route with a real common factor.
-using small_poly = geomint::detail::zpoly<geomint::detail::exact_limbs, 6>;
+using small_poly = geomint::integer_polynomial<geomint::detail::exact_limbs, 6>;
 constexpr small_poly make_poly(std::initializer_list<std::int64_t> c) {
   small_poly p;
   int k = 0;
@@ -225,10 +225,10 @@ constexpr small_poly make_poly(std::initializer_list<std::int64_t> c) {
 // (s - 2)(3s + 1) and (s - 2)(s + 5): gcd s - 2 (the primitive remainder sequence route).
 constexpr small_poly f1 = make_poly({-2, -5, 3});
 constexpr small_poly f2 = make_poly({-10, 3, 1});
-static_assert(geomint::detail::polynomial_gcd(f1, f2) == make_poly({-2, 1}));
-static_assert(geomint::detail::exact_quotient(f1, make_poly({-2, 1})) == make_poly({1, 3}));
-static_assert(geomint::detail::polynomial_gcd(make_poly({1, 3}), make_poly({5, 1})) == make_poly({1}));
+static_assert(geomint::polynomial_gcd(f1, f2) == make_poly({-2, 1}));
+static_assert(geomint::exact_quotient(f1, make_poly({-2, 1})) == make_poly({1, 3}));
+static_assert(geomint::polynomial_gcd(make_poly({1, 3}), make_poly({5, 1})) == make_poly({1}));
 // A common factor survives modulo every prime: the gcd is found by the exact route.
-static_assert(geomint::detail::polynomial_gcd(make_poly({6, 4}), make_poly({9, 6})) == make_poly({3, 2}));
+static_assert(geomint::polynomial_gcd(make_poly({6, 4}), make_poly({9, 6})) == make_poly({3, 2}));
 
 }  // namespace

@@ -22,7 +22,7 @@ using geomint::test::eps_tol;
 namespace {
 
 using T = cpp_bin_float_50;
-using big = detail::big_int<detail::exact_limbs>;
+using big = big_integer<detail::exact_limbs>;
 
 /// R and the x^{k-1} coefficient of the integrator's two-step map (linear in its inputs).
 template <class Scheme>
@@ -95,7 +95,7 @@ TEST_CASE("big integers print in decimal and throw on overflow", "[analysis][big
   CHECK_THROWS_AS(two_200 * two_200, std::overflow_error);
   CHECK_THROWS_AS(two_100.to_int64(), std::overflow_error);
   CHECK_THROWS_AS(big(1) / big(0), std::domain_error);
-  CHECK_THROWS_AS(detail::exact_quotient(big(7), big(2)), std::domain_error);
+  CHECK_THROWS_AS(exact_quotient(big(7), big(2)), std::domain_error);
 }
 
 TEST_CASE("exact leading coefficients print as reduced fractions", "[analysis][exact]") {

@@ -1,64 +1,146 @@
-// geomint-scheme: the exact two-step form of a scheme for the harmonic oscillator (eq. 15),
-// x^{k+1} = R(tau) x^k - x^{k-1}, R = P(tau^2)/Q(tau^2) in lowest terms, and its leading
-// local error term R(tau) - 2 cos(tau) = c tau^(p+2) + O(tau^(p+4)) (order p). Every number
-// printed was derived at compile time (include/geomint/analysis/exact_scheme.hpp).
+// geomint-scheme: exact analysis of the library's schemes from their RKN tableaux
+// (include/geomint/analysis: rkn_tableau, order_conditions, scheme_structure, linear_stability).
 //
-//   geomint-scheme [--m M|all] [--nodes equispaced] [--scheme lpf|midpoint] [--csv]
-#include <array>
-#include <cstdlib>
+//   geomint-scheme [--m M|all] [--nodes F] [--scheme lpf|midpoint|trapezoidal|galerkin] [--csv]
+//       the exact two-step form x^{k+1} = R(tau) x^k - x^{k-1} for y'' = -y (every family)
+//   geomint-scheme --analyse [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all] [--csv]
+//       order (Nystrom trees), symplecticity, symmetry, error constant, stability, phase lag
+//   geomint-scheme --tableau [--scheme S] [--nodes F] [--m M]
+//       the exact tableau (node polynomial and monomial-basis matrices, or rationals)
+//
+// The analysis uses the constexpr functions of the headers, evaluated here at run time (the
+// compile-time side is tests/analysis/static_scheme_analysis.cpp).
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <cmath>
+#include <functional>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
-#include <utility>
+#include <vector>
 
-#include "geomint/analysis/exact_scheme.hpp"
+#include "../common/cli.hpp"
+#include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/order_conditions.hpp"
+#include "geomint/analysis/rkn_tableau.hpp"
+#include "geomint/analysis/scheme_structure.hpp"
 
 namespace {
 
-using geomint::exact_two_step_scheme;
+using namespace geomint;
+using decimal = boost::multiprecision::cpp_bin_float_50;
 
 const char* usage_text =
-    "usage: geomint-scheme [--m M|all] [--nodes equispaced] [--scheme lpf|midpoint] [--csv]\n"
-    "  Prints the exact two-step form x^{k+1} = R(tau) x^k - x^{k-1} of a scheme for the\n"
-    "  harmonic oscillator L = xdot^2/2 - x^2/2 (R = P(tau^2)/Q(tau^2) in lowest terms, Q(0) > 0)\n"
-    "  and the leading local error term R(tau) - 2 cos(tau) = c tau^(p+2) + O(tau^(p+4)), order p.\n"
-    "  All of it is derived exactly at compile time.\n"
-    "  --m M         LPF interpolation degree, 2..8 (default 2), or all for m = 2..8\n"
-    "  --nodes N     node family: equispaced (default; the only exact family)\n"
-    "  --scheme S    lpf (default; eqs. 16, 18, 19 are m = 2, 3, 4) or midpoint (the midpoint\n"
-    "                VI, eq. 17; --m does not apply and m is printed as '-')\n"
-    "  --csv         m,numerator,denominator,order,leading_coefficient: the coefficients of P\n"
-    "                and Q in ascending powers of tau^2, separated by ';'\n"
-    "  --help        this text\n";
+    "usage: geomint-scheme [--analyse|--tableau] [--scheme lpf|midpoint|trapezoidal|galerkin]\n"
+    "                      [--nodes F[,F...]|all] [--m M|A..B|all] [--csv]\n"
+    "  Exact analysis of a scheme from its Runge-Kutta-Nystrom tableau (natural systems).\n"
+    "  default     the two-step form x^{k+1} = R(tau) x^k - x^{k-1} for L = xdot^2/2 - x^2/2:\n"
+    "              R = P(tau^2)/Q(tau^2) in lowest terms and R - 2 cos tau = c tau^(p+2) + ...\n"
+    "              (--csv: m,numerator,denominator,order,leading_coefficient)\n"
+    "  --analyse   order by Nystrom trees, exact symplecticity and symmetry, principal error\n"
+    "              constant C (2-norm of the tau^(p+1) error coefficients), interval of\n"
+    "              periodicity (0, tau*) and phase-lag order (--csv: scheme,nodes,m,stages,order,\n"
+    "              symplectic,symmetric,error_constant,stability_interval,phase_lag_order)\n"
+    "  --tableau   the exact tableau: node polynomial N and the matrices on Q[x]/(N) in the\n"
+    "              monomial basis (or rationals), with 30-digit decimals of c, a, bbar, b\n"
+    "  --scheme S  lpf (default), midpoint, trapezoidal or galerkin (Gauss quadrature, m = 1..8)\n"
+    "  --nodes F   equispaced (default), gauss-interior, lobatto, chebyshev (also gauss_interior,\n"
+    "              gauss-lobatto, chebyshev-lobatto, ...), a comma list, or all (LPF only)\n"
+    "  --m M       degree 2..8 for lpf, 1..8 for galerkin; A..B or all (default 2)\n"
+    "  --csv       CSV output\n"
+    "  --help      this text\n";
 
-int usage_error(const std::string& msg) {
-  std::cerr << "geomint-scheme: " << msg << "\n" << usage_text;
-  return 2;
+/// The families by canonical name; '-' and '_' are interchangeable in the input.
+const std::vector<std::string> family_names = {"equispaced", "gauss-interior", "lobatto", "chebyshev"};
+
+std::string canonical_family(std::string name) {
+  for (char& ch : name)
+    if (ch == '_') ch = '-';
+  if (name == "gauss-lobatto") return "lobatto";
+  if (name == "chebyshev-lobatto") return "chebyshev";
+  return name;
 }
 
-template <int... K>
-constexpr std::array<exact_two_step_scheme, sizeof...(K)> lpf_table(std::integer_sequence<int, K...>) {
-  return {geomint::exact_two_step_v<K + 2>...};
+template <class Family, int M>
+exact_rkn_tableau lpf_of(int m) {
+  if (m == M) return lpf_tableau<M, Family>();
+  if constexpr (M < max_exact_m) return lpf_of<Family, M + 1>(m);
+  throw std::logic_error("m out of range");
 }
-/// m = 2..8 on equispaced nodes, evaluated at compile time.
-constexpr auto lpf_schemes = lpf_table(std::make_integer_sequence<int, geomint::max_exact_m - 1>{});
+template <int M>
+exact_rkn_tableau galerkin_of(int m) {
+  if (m == M) return galerkin_tableau<M>();
+  if constexpr (M < max_exact_stages) return galerkin_of<M + 1>(m);
+  throw std::logic_error("m out of range");
+}
 
-std::string csv_coefficients(const std::array<std::int64_t, exact_two_step_scheme::capacity>& c, int degree) {
-  std::string out;
-  for (int k = 0; k <= degree; ++k) {
-    if (k != 0) out += ';';
-    out += std::to_string(c[static_cast<std::size_t>(k)]);
+/// The tableau of a scheme (computed at run time by the constexpr functions).
+exact_rkn_tableau tableau_of(const std::string& scheme, const std::string& family, int m) {
+  if (scheme == "midpoint") return midpoint_tableau();
+  if (scheme == "trapezoidal") return trapezoidal_tableau();
+  if (scheme == "galerkin") return galerkin_of<1>(m);
+  if (family == "equispaced") return lpf_of<equispaced, 2>(m);
+  if (family == "gauss-interior") return lpf_of<gauss_interior, 2>(m);
+  if (family == "lobatto") return lpf_of<gauss_lobatto, 2>(m);
+  return lpf_of<chebyshev_lobatto, 2>(m);
+}
+
+/// The stages in ascending order, in 50 digits (for the decimal tableau).
+template <class Family, int M>
+std::vector<decimal> lpf_nodes_of(int m) {
+  if (m == M) {
+    const auto c = nodes<Family, M, decimal>();
+    return std::vector<decimal>(c.begin() + 1, c.end() - 1);
   }
+  if constexpr (M < max_exact_m) return lpf_nodes_of<Family, M + 1>(m);
+  throw std::logic_error("m out of range");
+}
+std::vector<decimal> stages_of(const std::string& scheme, const std::string& family, int m) {
+  if (scheme == "galerkin") {
+    std::vector<decimal> out;
+    // Gauss nodes of m points = interior nodes of gauss_interior with m + 1.
+    if (m + 1 <= max_exact_m) {
+      const auto all = [&] {
+        return lpf_nodes_of<gauss_interior, 2>(m + 1);
+      }();
+      return all;
+    }
+    const auto c = nodes<gauss_interior, 9, decimal>();
+    return std::vector<decimal>(c.begin() + 1, c.end() - 1);
+  }
+  if (scheme == "midpoint" || scheme == "trapezoidal") return {};
+  if (family == "equispaced") return lpf_nodes_of<equispaced, 2>(m);
+  if (family == "gauss-interior") return lpf_nodes_of<gauss_interior, 2>(m);
+  if (family == "lobatto") return lpf_nodes_of<gauss_lobatto, 2>(m);
+  return lpf_nodes_of<chebyshev_lobatto, 2>(m);
+}
+
+decimal to_decimal(const exact_number& x) { return decimal(x.num.str()) / decimal(x.den.str()); }
+
+std::string digits30(const decimal& x) {
+  std::ostringstream s;
+  s << std::setprecision(30) << x;
+  return s.str();
+}
+std::string digits3(const decimal& x) {
+  std::ostringstream s;
+  s << std::setprecision(3) << std::scientific << x;
+  return s.str();
+}
+
+std::string integer_list(const stability_polynomial& p) {
+  std::string out;
+  for (int k = 0; k <= p.degree; ++k) out += (k ? ";" : "") + p[k].str();
   return out;
 }
 
-/// "16 - 6 tau^2 + 22 tau^4": ascending powers of tau.
-std::string polynomial_in_tau(const std::array<std::int64_t, exact_two_step_scheme::capacity>& c, int degree) {
+/// "16 - 6 tau^2 + ...": ascending powers of tau (z = tau^2).
+std::string polynomial_in_tau(const stability_polynomial& p, const char* var = "tau", int power_step = 2) {
   std::string out;
-  for (int k = 0; k <= degree; ++k) {
-    const std::int64_t v = c[static_cast<std::size_t>(k)];
-    if (v == 0) continue;
-    const bool negative = v < 0;
-    const std::string magnitude = std::to_string(negative ? -v : v);
+  for (int k = 0; k <= p.degree; ++k) {
+    if (p[k].is_zero()) continue;
+    const bool negative = p[k].sign() < 0;
+    const std::string magnitude = abs(p[k]).str();
     if (out.empty()) {
       if (negative) out += '-';
     } else {
@@ -67,95 +149,182 @@ std::string polynomial_in_tau(const std::array<std::int64_t, exact_two_step_sche
     if (k == 0 || magnitude != "1") out += magnitude;
     if (k != 0) {
       if (magnitude != "1") out += ' ';
-      out += "tau^";
-      out += std::to_string(2 * k);
+      out += var;
+      out += '^';
+      out += std::to_string(power_step * k);
     }
   }
   return out.empty() ? "0" : out;
 }
 
-std::string m_label(const exact_two_step_scheme& s) { return s.m == 0 ? "-" : std::to_string(s.m); }
-
-void print_csv_row(const exact_two_step_scheme& s) {
-  std::cout << m_label(s) << "," << csv_coefficients(s.numerator, s.numerator_degree) << ","
-            << csv_coefficients(s.denominator, s.denominator_degree) << "," << s.order << ","
-            << s.leading_coefficient.str() << "\n";
+std::string stability_text(const linear_stability_result& r) {
+  const stability_interval iv = periodicity_interval(r);
+  if (iv.unbounded) return "inf";
+  using std::sqrt;
+  return digits30(sqrt(to_decimal(iv.low)));
 }
 
-void print_human(const exact_two_step_scheme& s) {
-  if (s.m == 0) {
-    std::cout << "scheme: midpoint variational integrator (eq. 17)\n";
+struct options {
+  std::string mode = "two-step";
+  std::string scheme = "lpf";
+  std::vector<std::string> families = {"equispaced"};
+  int m_first = 2, m_last = 2;
+  bool m_given = false;
+  bool csv = false;
+  std::string m_text = "2";
+};
+
+int two_step(const options& o) {
+  if (o.csv) std::cout << "m,numerator,denominator,order,leading_coefficient\n";
+  const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
+  for (const std::string& family : o.families)
+    for (int m = o.m_first; m <= (single ? o.m_first : o.m_last); ++m) {
+      const linear_stability_result r = linear_stability(tableau_of(o.scheme, family, m));
+      const std::string m_label = single ? "-" : std::to_string(m);
+      if (o.csv) {
+        std::cout << m_label << "," << integer_list(r.numerator) << "," << integer_list(r.denominator) << "," << r.order << ","
+                  << r.leading_coefficient.str() << "\n";
+        continue;
+      }
+      if (o.scheme == "lpf") {
+        std::cout << "scheme: lpf, m = " << m << ", " << family << " nodes";
+        if (family == "equispaced" && m == 2) std::cout << " (eq. 16)";
+        if (family == "equispaced" && m == 3) std::cout << " (eq. 18)";
+        if (family == "equispaced" && m == 4) std::cout << " (eq. 19)";
+        std::cout << "\n";
+      } else if (o.scheme == "midpoint") {
+        std::cout << "scheme: midpoint variational integrator (eq. 17)\n";
+      } else {
+        std::cout << "scheme: " << o.scheme << (o.scheme == "galerkin" ? ", m = " + std::to_string(m) : "") << "\n";
+      }
+      std::cout << "x^{k+1} = R(tau) x^k - " << (r.determinant_is_one ? "" : "det(M) ") << "x^{k-1}\n";
+      std::cout << "R(tau) = (" << polynomial_in_tau(r.numerator) << ")/(" << polynomial_in_tau(r.denominator) << ")\n";
+      std::cout << "R(tau) - 2 cos(tau) = " << r.leading_coefficient.str() << " tau^" << r.order + 2 << " + O(tau^" << r.order + 4
+                << ")\n";
+      std::cout << "order p = " << r.order << "\n\n";
+    }
+  return cli::finish_stdout("geomint-scheme");
+}
+
+int analyse(const options& o) {
+  if (o.csv)
+    std::cout << "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,stability_interval,phase_lag_order\n";
+  const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
+  const std::vector<std::string> families = o.scheme == "lpf" ? o.families : std::vector<std::string>{"-"};
+  for (const std::string& family : families)
+    for (int m = o.m_first; m <= (single ? o.m_first : o.m_last); ++m) {
+      const exact_rkn_tableau t = tableau_of(o.scheme, family, m);
+      const order_summary ord = order_analysis(t);
+      const symplecticity_result sy = symplecticity(t);
+      const symmetry_result sm = symmetry(t);
+      const linear_stability_result ls = linear_stability(t);
+      using std::sqrt;
+      const std::string error_constant = ord.order_is_lower_bound ? "-" : digits3(sqrt(to_decimal(ord.error_constant_squared)));
+      const std::string order = std::to_string(ord.order) + (ord.order_is_lower_bound ? "+" : "");
+      const std::string nodes_label = o.scheme == "lpf" ? family : (o.scheme == "galerkin" ? "gauss" : "-");
+      const std::string m_label = single ? "-" : std::to_string(m);
+      if (o.csv) {
+        std::cout << o.scheme << "," << nodes_label << "," << m_label << "," << t.stages << "," << order << ","
+                  << (sy.symplectic ? "yes" : "no") << "," << (sm.symmetric ? "yes" : "no") << "," << error_constant << ","
+                  << stability_text(ls) << "," << ls.phase_lag_order << "\n";
+      } else {
+        std::cout << o.scheme << " " << nodes_label << " m = " << m_label << ": " << t.stages << " stages, order " << order
+                  << " (quadrature order " << quadrature_order(t) << ", " << ord.conditions_checked << " tree conditions, "
+                  << ord.nonzero_defects << " nonzero at order " << ord.order + 1 << "), C = " << error_constant
+                  << ", C^2 = " << ord.error_constant_squared.str() << "\n"
+                  << "  symplectic: " << (sy.symplectic ? "yes" : "no") << " (bbar = b (1 - c): "
+                  << (sy.first_condition ? "yes" : "no") << ", b_i (bbar_j - a_ij) = b_j (bbar_i - a_ji): "
+                  << (sy.second_condition ? "yes" : "no") << "); symmetric: " << (sm.symmetric ? "yes" : "no") << "\n"
+                  << "  stability interval tau* = " << stability_text(ls) << "; phase-lag order " << ls.phase_lag_order
+                  << ", constant " << ls.phase_lag_constant.str() << "\n";
+      }
+    }
+  return cli::finish_stdout("geomint-scheme");
+}
+
+int print_tableau(const options& o) {
+  const std::string& family = o.families.front();
+  const int m = o.m_first;
+  const exact_rkn_tableau t = tableau_of(o.scheme, family, m);
+  const int s = t.stages;
+  std::cout << "scheme " << o.scheme << (o.scheme == "lpf" ? " " + family : std::string()) << " m = " << m << ", " << s
+            << " stages\n";
+  if (t.basis == stage_basis::monomial) {
+    std::cout << "stages: the roots of N(x) = ";
+    for (int k = s; k >= 0; --k)
+      if (!t.node_polynomial[k].num.is_zero())
+        std::cout << (k == s ? "" : " + (") << t.node_polynomial[k].str() << (k == s ? "" : ")") << (k ? " x^" + std::to_string(k) : "");
+    std::cout << "\nexact tableau on Q[x]/(N), monomial basis 1, x, ..., x^" << s - 1 << " (column k: the image of x^k)\n";
   } else {
-    std::cout << "scheme: lpf, m = " << s.m << ", equispaced nodes";
-    if (s.m == 2) std::cout << " (eq. 16)";
-    if (s.m == 3) std::cout << " (eq. 18)";
-    if (s.m == 4) std::cout << " (eq. 19)";
+    std::cout << "exact tableau (stage values)\nc:";
+    for (int i = 0; i < s; ++i) std::cout << " " << t.c[i].str();
     std::cout << "\n";
   }
-  std::cout << "x^{k+1} = R(tau) x^k - x^{k-1}\n";
-  std::cout << "R(tau) = (" << polynomial_in_tau(s.numerator, s.numerator_degree) << ")/("
-            << polynomial_in_tau(s.denominator, s.denominator_degree) << ")\n";
-  std::cout << "R(tau) - 2 cos(tau) = " << s.leading_coefficient.str() << " tau^" << s.leading_power() << " + O(tau^"
-            << s.leading_power() + 2 << ")\n";
-  std::cout << "order p = " << s.order << "\n";
+  std::cout << "A:\n";
+  for (int i = 0; i < s; ++i) {
+    for (int j = 0; j < s; ++j) std::cout << (j ? "  " : "  ") << t.a[i][j].str();
+    std::cout << "\n";
+  }
+  std::cout << "bbar:";
+  for (int k = 0; k < s; ++k) std::cout << " " << t.bbar[k].str();
+  std::cout << "\nb:";
+  for (int k = 0; k < s; ++k) std::cout << " " << t.b[k].str();
+  std::cout << "\n";
+  std::vector<decimal> c = stages_of(o.scheme, family, m);
+  const numeric_rkn_tableau<decimal> n = numeric_tableau<decimal>(t, c.data());
+  std::cout << "decimal tableau (30 digits; nodes from core/nodes.hpp)\n";
+  for (int i = 0; i < s; ++i) {
+    std::cout << "c_" << i + 1 << " = " << digits30(n.c[static_cast<std::size_t>(i)]) << "\n  a:";
+    for (int j = 0; j < s; ++j) std::cout << " " << digits30(n.a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)]);
+    std::cout << "\n  bbar = " << digits30(n.bbar[static_cast<std::size_t>(i)]) << ", b = " << digits30(n.b[static_cast<std::size_t>(i)])
+              << "\n";
+  }
+  return cli::finish_stdout("geomint-scheme");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string m_arg = "2", nodes = "equispaced", scheme = "lpf";
-  bool csv = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    auto value = [&](std::string& target) {
-      if (i + 1 >= argc) return false;
-      target = argv[++i];
-      return true;
-    };
-    if (flag == "--help" || flag == "-h") {
-      std::cout << usage_text;
-      return 0;
-    } else if (flag == "--csv") {
-      csv = true;
-    } else if (flag == "--all") {
-      m_arg = "all";
-    } else if (flag == "--m") {
-      if (!value(m_arg)) return usage_error("--m needs a value");
-    } else if (flag == "--nodes") {
-      if (!value(nodes)) return usage_error("--nodes needs a value");
-    } else if (flag == "--scheme") {
-      if (!value(scheme)) return usage_error("--scheme needs a value");
+  options o;
+  cli::parser cl("geomint-scheme", usage_text);
+  cl.toggle("--analyse", [&] { o.mode = "analyse"; });
+  cl.toggle("--analyze", [&] { o.mode = "analyse"; });
+  cl.toggle("--tableau", [&] { o.mode = "tableau"; });
+  cl.toggle("--csv", [&] { o.csv = true; });
+  cl.toggle("--all", [&] { o.m_text = "all"; });
+  cl.value("--scheme", [&](const std::string& v) {
+    o.scheme = cli::parse_choice("--scheme", v, {"lpf", "midpoint", "trapezoidal", "galerkin"});
+  });
+  cl.value("--nodes", [&](const std::string& v) {
+    std::string text = v;
+    std::vector<std::string> items;
+    if (text == "all") {
+      items = family_names;
     } else {
-      return usage_error("unknown argument '" + flag + "'");
+      std::string canonical;
+      for (const std::string& item : cli::split_list("--nodes", text, 16)) canonical += (canonical.empty() ? "" : ",") + canonical_family(item);
+      items = cli::parse_choice_list("--nodes", canonical, family_names);
     }
+    o.families = items;
+  });
+  cl.value("--m", [&](const std::string& v) { o.m_text = v; o.m_given = true; });
+  if (const auto done = cl.parse(argc, argv)) return *done;
+  try {
+    const int lo = o.scheme == "galerkin" ? 1 : 2;
+    const int hi = o.scheme == "galerkin" ? max_exact_stages : max_exact_m;
+    const auto range = cli::parse_integer_range<int>("--m", o.m_text, lo, hi, o.mode != "tableau");
+    o.m_first = range.first;
+    o.m_last = range.second;
+    if (o.mode == "tableau" && o.families.size() != 1) throw cli::usage_error("--tableau takes one node family");
+  } catch (const std::exception& e) {
+    return cl.fail(e.what());
   }
-  if (scheme != "lpf" && scheme != "midpoint") return usage_error("--scheme must be lpf or midpoint");
-  if (nodes == "lobatto" || nodes == "chebyshev" || nodes == "gauss-interior")
-    return usage_error("node family '" + nodes + "' has irrational nodes; the exact derivation needs equispaced nodes");
-  if (nodes != "equispaced") return usage_error("unknown node family '" + nodes + "'");
-
-  int first = 2, last = geomint::max_exact_m;
-  if (m_arg != "all") {
-    const bool digits = !m_arg.empty() && m_arg.size() <= 2 && m_arg.find_first_not_of("0123456789") == std::string::npos;
-    const int m = digits ? std::atoi(m_arg.c_str()) : -1;
-    if (m < 2 || m > geomint::max_exact_m) return usage_error("--m must be an integer in 2..8 (or all), got '" + m_arg + "'");
-    first = last = m;
+  try {
+    if (o.mode == "analyse") return analyse(o);
+    if (o.mode == "tableau") return print_tableau(o);
+    return two_step(o);
+  } catch (const std::exception& e) {
+    std::cerr << "geomint-scheme: " << e.what() << "\n";
+    return cli::exit_run_failure;
   }
-
-  if (csv) std::cout << "m,numerator,denominator,order,leading_coefficient\n";
-  if (scheme == "midpoint") {
-    if (csv) print_csv_row(geomint::exact_midpoint_two_step_v);
-    else print_human(geomint::exact_midpoint_two_step_v);
-    return 0;
-  }
-  for (int m = first; m <= last; ++m) {
-    const exact_two_step_scheme& s = lpf_schemes[static_cast<std::size_t>(m - 2)];
-    if (csv) {
-      print_csv_row(s);
-    } else {
-      if (m != first) std::cout << "\n";
-      print_human(s);
-    }
-  }
-  return 0;
 }

@@ -1,0 +1,118 @@
+/// Compile-time facts of the exact scheme algebra (include/geomint/analysis: rkn_tableau,
+/// nystrom_trees, order_conditions, scheme_structure, linear_stability). Every assertion is
+/// evaluated by the compiler; a broken identity fails the build.
+///
+/// Independent sources of the expected values:
+/// - tree counts: OEIS A001678 (lone-child-avoiding rooted trees with n + 2 vertices);
+/// - orders: collocation theory (an s-stage collocation method has the order of its quadrature,
+///   Gauss: 2s; Hairer, Norsett, Wanner, Solving ODEs I, section II.7 and II.14), so LPF of
+///   degree m on the Gauss interior nodes has order 2(m - 1), Galerkin (Gauss collocation with
+///   m stages) 2m, and symmetric rational or Lobatto / Chebyshev interior nodes the quadrature
+///   order 2 floor(m/2) (measured by geomint-order: docs/results/analysis.md);
+/// - R(tau): the LPF paper's eq. (16) and (17) (Kong & Yang 2020);
+/// - symplecticity: Suris' conditions hold for Gauss collocation and for the midpoint rule and
+///   Stormer-Verlet (Hairer, Lubich, Wanner, Geometric Numerical Integration, VI.4).
+#include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/order_conditions.hpp"
+#include "geomint/analysis/scheme_structure.hpp"
+
+namespace {
+
+using namespace geomint;
+
+// Tree counts by size (OEIS A001678 shifted by two), generated at compile time up to 14 here.
+constexpr bool tree_counts_match() {
+  constexpr int expected[] = {1, 1, 2, 3, 6, 10, 20, 36, 72, 137, 275, 541, 1098, 2208};
+  const nystrom_tree_table t = make_nystrom_trees(14);
+  for (int n = 1; n <= 14; ++n)
+    if (t.count(n) != expected[n - 1]) return false;
+  return true;
+}
+static_assert(tree_counts_match());
+// Densities and symmetries of the trees of size 3: f''(p, p) (gamma 3, sigma 2), f' f (gamma 6, sigma 1).
+static_assert(make_nystrom_trees(3).trees[2].gamma == 3 && make_nystrom_trees(3).trees[2].sigma == 2);
+static_assert(make_nystrom_trees(3).trees[3].gamma == 6 && make_nystrom_trees(3).trees[3].sigma == 1);
+
+// The examples.
+static_assert(tree_order(lpf_tableau<5, gauss_interior>()) == 8);
+static_assert(symmetry(lpf_tableau<4, gauss_lobatto>()).symmetric);
+static_assert(!symplecticity(lpf_tableau<4, gauss_lobatto>()).symplectic);
+static_assert(symplecticity(lpf_tableau<4, gauss_lobatto>()).first_condition);  // bbar = b (1 - c) holds
+static_assert(!symplecticity(lpf_tableau<4, gauss_lobatto>()).second_condition);
+
+// Galerkin of degree m: order 2m by the trees (m = 1..4) and by the quadrature (m = 1..8).
+static_assert(tree_order(galerkin_tableau<1>()) == 2 && tree_order(galerkin_tableau<2>()) == 4);
+static_assert(tree_order(galerkin_tableau<3>()) == 6 && tree_order(galerkin_tableau<4>()) == 8);
+template <int M>
+constexpr bool galerkin_quadrature_orders() {
+  if (quadrature_order(galerkin_tableau<M>()) != 2 * M) return false;
+  if (!symplecticity(galerkin_tableau<M>()).symplectic) return false;
+  if constexpr (M < 8) return galerkin_quadrature_orders<M + 1>();
+  return true;
+}
+static_assert(galerkin_quadrature_orders<1>());
+
+// Every LPF family, m = 2..8: quadrature order; symplectic exactly for Gauss interior nodes and
+// for m = 2.
+template <class Family>
+constexpr int expected_order(int m) {
+  return std::is_same_v<Family, gauss_interior> ? 2 * (m - 1) : 2 * (m / 2);
+}
+template <class Family, int M>
+constexpr bool lpf_family_facts() {
+  constexpr exact_rkn_tableau t = lpf_tableau<M, Family>();
+  static_assert(t.stages == M - 1);
+  static_assert(quadrature_order(t) == expected_order<Family>(M));
+  static_assert(symplecticity(t).symplectic == (std::is_same_v<Family, gauss_interior> || M == 2));
+  if constexpr (M < max_exact_m) return lpf_family_facts<Family, M + 1>();
+  return true;
+}
+static_assert(lpf_family_facts<equispaced, 2>());
+static_assert(lpf_family_facts<gauss_interior, 2>());
+static_assert(lpf_family_facts<gauss_lobatto, 2>());
+static_assert(lpf_family_facts<chebyshev_lobatto, 2>());
+
+// Tree order = quadrature order where the trees are cheap at compile time (order <= 6).
+template <class Family, int M>
+constexpr bool tree_orders_small() {
+  static_assert(tree_order(lpf_tableau<M, Family>()) == expected_order<Family>(M));
+  if constexpr (M < (std::is_same_v<Family, gauss_interior> ? 4 : 7)) return tree_orders_small<Family, M + 1>();
+  return true;
+}
+static_assert(tree_orders_small<equispaced, 2>());
+static_assert(tree_orders_small<gauss_interior, 2>());
+static_assert(tree_orders_small<gauss_lobatto, 2>());
+static_assert(tree_orders_small<chebyshev_lobatto, 2>());
+
+// Midpoint and trapezoidal (Stormer-Verlet): order 2, symplectic, symmetric.
+static_assert(tree_order(midpoint_tableau()) == 2 && tree_order(trapezoidal_tableau()) == 2);
+static_assert(symplecticity(midpoint_tableau()).symplectic && symmetry(midpoint_tableau()).symmetric);
+static_assert(symplecticity(trapezoidal_tableau()).symplectic && symmetry(trapezoidal_tableau()).symmetric);
+
+// Principal error constant of the midpoint VI: C^2 = 1/64 (three trees of order 3).
+static_assert(order_analysis(midpoint_tableau()).error_constant_squared == exact_number(rational(1, 64)));
+
+// Linear stability: eq. (16) R = (16 - 6 tau^2)/(8 + tau^2), eq. (17) R = (8 - 2 tau^2)/(4 + tau^2).
+constexpr bool has_r(const linear_stability_result& r, std::int64_t p0, std::int64_t p1, std::int64_t q0, std::int64_t q1) {
+  return r.numerator.degree == 1 && r.denominator.degree == 1 && r.numerator[0] == stability_integer(p0) &&
+         r.numerator[1] == stability_integer(p1) && r.denominator[0] == stability_integer(q0) &&
+         r.denominator[1] == stability_integer(q1);
+}
+static_assert(has_r(linear_stability(lpf_tableau<2, equispaced>()), 16, -6, 8, 1));
+static_assert(has_r(linear_stability(midpoint_tableau()), 8, -2, 4, 1));
+static_assert(linear_stability(midpoint_tableau()).leading_coefficient == exact_number(rational(1, 6)));
+static_assert(linear_stability(lpf_tableau<3, gauss_interior>()).order == 4 &&
+              linear_stability(lpf_tableau<3, gauss_interior>()).determinant_is_one);
+
+// Schemes of one's own: rational nodes, a node polynomial, an explicit tableau.
+// Nodes 1/6, 1/2, 5/6 (symmetric): quadrature order 4, not symplectic.
+constexpr exact_rkn_tableau own = collocation_tableau_from_nodes<3>({rational(1, 6), rational(1, 2), rational(5, 6)});
+static_assert(quadrature_order(own) == 4 && tree_order(own) == 4 && symmetry(own).symmetric && !symplecticity(own).symplectic);
+// x^2 - x + 1/6: the two Gauss points, the same tableau as lpf<3, gauss_interior>.
+constexpr exact_rkn_tableau own_poly = collocation_tableau_from_polynomial<2>({rational(1, 6), rational(-1), rational(1)});
+static_assert(own_poly == lpf_tableau<3, gauss_interior>() && tree_order(own_poly) == 4);
+// Stormer-Verlet written out by hand.
+static_assert(rational_rkn_tableau<2>({rational(0), rational(1)}, {{{rational(0), rational(0)}, {rational(1, 2), rational(0)}}},
+                                      {rational(1, 2), rational(0)}, {rational(1, 2), rational(1, 2)}) == trapezoidal_tableau());
+
+}  // namespace
