@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# What the schemes really are (issue 4): the exact two-step schemes of the harmonic oscillator,
+# What the schemes really are: the exact two-step schemes of the harmonic oscillator,
 # the observed orders on the nonlinear systems (50 digits), the symplecticity defects and the
-# long-time energy behaviour. Writes CSV and the README's markdown tables under OUT/analysis.
+# long-time energy behaviour. Writes CSV and the markdown tables of docs/results/analysis.md under OUT/analysis.
 # Usage: bash scripts/demo_analysis.sh BUILD_DIR OUT_DIR   (builds nothing)
 set -euo pipefail
 if [ $# -ne 2 ]; then echo "usage: bash scripts/demo_analysis.sh BUILD_DIR OUT_DIR" >&2; exit 2; fi

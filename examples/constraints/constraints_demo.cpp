@@ -1,4 +1,4 @@
-/// Holonomic constraints (LPF paper, example 3.3; DESIGN.md section 4), three studies written as CSV:
+/// Holonomic constraints (LPF paper, example 3.3; docs/design.md, "Constraints"), three studies written as CSV:
 ///   circle.csv     the particle on the unit circle, tau = 0.1: the constrained LPF integrator
 ///                  (m = 2), constraint violation and energy error against time;
 ///   circle_paper23.csv  the paper's scheme (23) as printed (two-step), until it leaves the circle;
@@ -6,8 +6,9 @@
 ///   double.csv     the planar double pendulum in Cartesian coordinates (two rods, constrained
 ///                  LPF) and in angles (unconstrained LPF), positions side by side.
 /// Usage: geomint-constraints-demo OUT_DIR [--circle-steps N]
-#include <geomint/constraints/constrained_lpf.hpp>
-#include <geomint/constraints/systems.hpp>
+#include <geomint/schemes/constrained_lpf.hpp>
+#include <geomint/mechanics/constrained_systems.hpp>
+#include <geomint/schemes/paper23.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <chrono>

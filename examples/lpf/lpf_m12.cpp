@@ -1,13 +1,13 @@
 /// LPF of degree m = 12 on Gauss-interior nodes (order 2m - 2 = 22) for the pendulum in double:
 /// theta0 = 1 at rest, tau = 0.5, 2000 steps (t = 1000); prints the largest energy error.
-/// Also a compile-time check: this program instantiates one m = 12 engine (issue 7 reports its
+/// Also a compile-time check: this program instantiates one m = 12 engine (docs/results/performance.md reports its
 /// compile time).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "geomint/lpf/integrator.hpp"
-#include "geomint/lpf/systems.hpp"
+#include "geomint/integrator.hpp"
+#include "geomint/mechanics/systems.hpp"
 
 int main() {
   using namespace geomint;

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <string>
 
-#include "geomint/lpf/integrator.hpp"
-#include "geomint/lpf/systems.hpp"
+#include "geomint/integrator.hpp"
+#include "geomint/mechanics/systems.hpp"
 
 using namespace geomint;
 

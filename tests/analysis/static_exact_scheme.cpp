@@ -3,7 +3,7 @@
 ///
 /// Independent sources of the expected values:
 /// - eqs. (16), (17), (18), (19): the printed formulas of Kong & Yang (2020), section 3
-///   (../shared/papers/kong-yang-2020-lagrange-interpolation-vi.md);
+///   (docs/references.md);
 /// - the leading error coefficients of (16) and (17): Taylor expansion by hand, e.g.
 ///   (16 - 6s)/(8 + s) = 2 - s + s^2/8 - ..., 2 cos(tau) = 2 - s + s^2/12 - ..., difference
 ///   s^2/24 = tau^4/24; (8 - 2s)/(4 + s) = 2 - s + s^2/4 - ..., difference s^2/6;

@@ -11,8 +11,8 @@
 
 #include "catch.hpp"
 #include "geomint/analysis/exact_scheme.hpp"
-#include "geomint/lpf/integrator.hpp"
-#include "geomint/lpf/systems.hpp"
+#include "geomint/integrator.hpp"
+#include "geomint/mechanics/systems.hpp"
 #include "scalar_types.hpp"
 
 using namespace geomint;

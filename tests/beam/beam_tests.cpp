@@ -61,7 +61,7 @@ gb::options<T> opts(const T& dt, gb::scheme s = gb::scheme::poisson,
 
 }  // namespace
 
-TEST_CASE("material matrices of DESIGN.md section 6 (square section)", "[beam]") {
+TEST_CASE("material matrices of docs/design.md, "Beam conventions" (square section)", "[beam]") {
   // Exact arithmetic: a = 1/10 -> A = 1/100, I = 1/120000, J = 1/60000, G = 1e7/2.7.
   using T = double;
   const auto m = gb::material<T>::square_section(T(1) / T(10), T(1000), T(1e7), T(35) / T(100));
@@ -104,7 +104,7 @@ TEMPLATE_LIST_TEST_CASE("node solve: Newton reaches the working precision; both 
 TEST_CASE("energy error is bounded over 1e4 steps and first order in dt", "[beam]") {
   // Section 4 initial data on a coarse grid (26 nodes) with the same CFL number as the paper
   // (dt/ds = 1e-4/(l/100)). Expected behaviour: the scheme is a symplectic-Euler-type splitting,
-  // whose energy error is O(dt) and does not grow (no drift). Measured (README, "Geometrically exact beam"): 2.45% at
+  // whose energy error is O(dt) and does not grow (no drift). Measured (docs/results/beam.md): 2.45% at
   // dt = 4e-4 over 1e4 steps, 1.04% at dt = 2e-4 over the same time.
   using T = double;
   const gb::paper_case<T> pc(26);
@@ -124,7 +124,7 @@ TEST_CASE("energy error is bounded over 1e4 steps and first order in dt", "[beam
 }
 
 TEST_CASE("spatial momentum: not a discrete invariant; O(dt) with (55), O(dt^2) with the midpoint velocity", "[beam]") {
-  // Paper case over t in [0, 0.1] s. Finding (README, "Geometrically exact beam"): neither the scheme nor any of the
+  // Paper case over t in [0, 0.1] s. Finding (docs/results/beam.md): neither the scheme nor any of the
   // reconstructions conserves the spatial momentum ds sum_j Ad^*_{g_j^{-1}} mu_j exactly, because
   // the Cayley map of SE(3) does not satisfy Ad_{cay(xi)} = cay(ad_xi) (it does on SO(3)), so the
   // stress terms of (53) do not telescope. The deviation is a time-discretisation error:

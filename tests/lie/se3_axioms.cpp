@@ -1,4 +1,4 @@
-// Axioms of se(3)/SE(3) with the conventions of DESIGN.md section 6, for double and
+// Axioms of se(3)/SE(3) with the conventions of docs/design.md, "Beam conventions", for double and
 // cpp_bin_float_50. Every expected value is exact mathematics (an identity that holds for all
 // arguments) or a second, independent computation (matrix commutator, matrix inverse via LU,
 // Taylor series of the 4x4 matrix exponential); tolerances are multiples of the scalar's

@@ -1,4 +1,4 @@
-// Benchmarks of one step of geomint's variational integrators (single thread), issue 7.
+// Benchmarks of one step of geomint's variational integrators (single thread).
 //
 //   <system>/<scalar>/<scheme>: one step of the one-step form (q_k, p_k) -> (q_{k+1}, p_{k+1})
 //   along the trajectory (each iteration continues from the previous state):
@@ -15,8 +15,8 @@
 #include <benchmark/benchmark.h>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "geomint/lpf/integrator.hpp"
-#include "geomint/lpf/systems.hpp"
+#include "geomint/integrator.hpp"
+#include "geomint/mechanics/systems.hpp"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "geomint/core/multiprecision.hpp"
-#include "geomint/lpf/newton.hpp"
+#include "geomint/solvers/newton.hpp"
 
 namespace geomint::tools {
 
@@ -82,7 +82,7 @@ std::unique_ptr<stepper<T>> make_system_stepper(const scheme_spec& spec);
 
 }  // namespace geomint::tools
 
-#include "geomint/lpf/systems.hpp"
+#include "geomint/mechanics/systems.hpp"
 
 namespace geomint::tools {
 

@@ -2,7 +2,7 @@
 /// The factory behind stepper.hpp for one system and scalar; included by stepper_tu.cpp only.
 #include <stdexcept>
 
-#include "geomint/lpf/integrator.hpp"
+#include "geomint/integrator.hpp"
 #include "stepper.hpp"
 
 namespace geomint::tools {

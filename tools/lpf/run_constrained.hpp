@@ -7,8 +7,9 @@
 #include <limits>
 #include <string>
 
-#include "geomint/constraints/constrained_lpf.hpp"
-#include "geomint/constraints/systems.hpp"
+#include "geomint/schemes/constrained_lpf.hpp"
+#include "geomint/mechanics/constrained_systems.hpp"
+#include "geomint/schemes/paper23.hpp"
 #include "run_impl.hpp"
 
 namespace geomint::run {

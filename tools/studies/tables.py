@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Markdown tables for the README section "What the schemes really are" from the CSV files of
+"""Markdown tables for docs/results/analysis.md from the CSV files of
 scripts/demo_analysis.sh (exact_schemes.csv, orders.csv, symplectic.csv, energy.csv).
 Usage: python3 tools/studies/tables.py DIR"""
 import csv

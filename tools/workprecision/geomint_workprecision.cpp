@@ -1,5 +1,5 @@
 /// geomint-workprecision: work-precision comparison of geomint's variational integrators with
-/// Boost.Odeint's symplectic steppers on the pendulum and the Kepler problem (issue 7).
+/// Boost.Odeint's symplectic steppers on the pendulum and the Kepler problem.
 ///
 /// For every method and a geometric sequence of step sizes, integrates to t = T (default 1000)
 /// in double and records the CPU time of the stepping loop, the final phase-space error
@@ -38,8 +38,8 @@
 #include <boost/numeric/odeint/stepper/symplectic_rkn_sb3a_mclachlan.hpp>
 #include <boost/numeric/odeint/stepper/velocity_verlet.hpp>
 
-#include "geomint/lpf/integrator.hpp"
-#include "geomint/lpf/systems.hpp"
+#include "geomint/integrator.hpp"
+#include "geomint/mechanics/systems.hpp"
 
 /// Odeint's norm_inf descends value_type chains; a Boost.Multiprecision number is its own end.
 template <>

@@ -5,7 +5,7 @@
 ///   x^{k+1} = R(tau) x^k - x^{k-1},   R = P(s) / Q(s),   s = tau^2,
 /// with P, Q integer polynomials: eq. (16) for m = 2, (18) for m = 3, (19) for m = 4 (LPF,
 /// equispaced nodes) and (17) for the midpoint variational integrator. This header derives P and
-/// Q exactly for the LPF scheme (include/geomint/lpf/lpf.hpp) with m = 2..8 on an exact node
+/// Q exactly for the LPF scheme (include/geomint/schemes/lpf.hpp) with m = 2..8 on an exact node
 /// family, and for the midpoint VI, and expands R(tau) - 2 cos(tau) = c tau^(p+2) + O(tau^(p+4))
 /// for the exact leading local error term and the order p.
 ///

@@ -1,5 +1,5 @@
 #pragma once
-/// Observed orders of a one-step map against a reference flow (DESIGN.md section 5).
+/// Observed orders of a one-step map against a reference flow (docs/design.md, "Verification").
 ///
 /// For a ladder of steps tau_i = T / N_i (N_i doubling):
 /// - local error  e_loc(tau) = |Phi_tau(z_0) - phi_tau(z_0)|   ~ C_loc tau^(p+1),

@@ -21,8 +21,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "geomint/lpf/lagrangian.hpp"
-#include "geomint/lpf/systems.hpp"
+#include "geomint/mechanics/lagrangian.hpp"
+#include "geomint/mechanics/systems.hpp"
 
 namespace geomint::analysis {
 

@@ -7,7 +7,7 @@
 ///   2. scheme (54) on every segment: a 6x6 linear solve for gamma_{j+1/2}^{n+1};
 ///   3. Cayley reconstruction (55): g_j^{n+1} = g_j^n cay(dt zeta_j), zeta = D1^{-1} mu,
 ///      with zeta_j = zeta_j^n as printed in the paper (`cayley_velocity::previous`), or
-///      zeta_j^{n+1} / the average of the two (options; see README, "Geometrically exact beam" for what each does to
+///      zeta_j^{n+1} / the average of the two (options; see docs/results/beam.md for what each does to
 ///      the momentum).
 /// The step is computed into separate buffers and committed only when every value is finite,
 /// every Newton solve has converged and the energy has not blown up; otherwise a `step_error`

@@ -116,7 +116,7 @@ newton_result<T> solve_node(vec6<T>& x, const vec6<T>& c, const T& h, const vec6
 }
 
 /// Solves x - h Q(x) = c when the translational block of D1 is isotropic (D1_4 = D1_5 = D1_6,
-/// true for every material of DESIGN.md section 6). Then p x v = 0 in Q, so with w = Dr pi
+/// true for every material of docs/design.md, "Beam conventions"). Then p x v = 0 in Q, so with w = Dr pi
 ///   pi - h pi x w = c_pi          (3x3, nonlinear: Newton with the closed-form 3x3 inverse),
 ///   (I + h w^) p = c_p            (linear, closed form once pi is known).
 /// Same stopping rules as solve_node (the residual is that of the rotational block, the

@@ -1,5 +1,5 @@
 #pragma once
-/// Material matrices of the geometrically exact beam (DESIGN.md section 6).
+/// Material matrices of the geometrically exact beam (docs/design.md, "Beam conventions").
 ///
 /// For a square section of side a (the beam paper leaves them implicit):
 ///   A = a^2, I = a^4/12, J = 2I, G = E/(2(1+nu)), no shear correction;

@@ -1,5 +1,5 @@
 #pragma once
-/// The test case of the beam paper, section 4 (DESIGN.md section 6):
+/// The test case of the beam paper, section 4 (docs/design.md, "Beam conventions"):
 ///   l = 2 pi/3, a = 0.1, rho = 1000, E = 1e7, nu = 0.35, dt = 1e-4, J + 1 = 101 nodes,
 ///   mu_j^0 = (0,0,0, a^2 rho sin(j pi/J), a^2 rho, 0)   (the paper writes sin(j pi/100), J = 100),
 ///   gamma_{j+1/2}^0 = (-1,0,0, 0,0,0),   free ends gamma_{-1/2} = gamma_{J+1/2} = 0.

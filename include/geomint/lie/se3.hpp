@@ -1,5 +1,5 @@
 #pragma once
-/// se(3) and SE(3) over any real scalar, with the conventions of DESIGN.md section 6:
+/// se(3) and SE(3) over any real scalar, with the conventions of docs/design.md, "Beam conventions":
 ///
 ///   xi = (omega, v) in R^6,  xi^ = [[omega^, v], [0, 0]] in R^{4x4};
 ///   [xi, eta] = ad_xi eta = (w x w', w x v' - w' x v)           (= vee([xi^, eta^]));

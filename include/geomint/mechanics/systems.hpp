@@ -1,9 +1,9 @@
 #pragma once
-/// Built-in Lagrangian systems (LPF paper section 3 and DESIGN.md section 1).
+/// Built-in Lagrangian systems (LPF paper section 3).
 
 #include <string_view>
 
-#include "geomint/lpf/lagrangian.hpp"
+#include "geomint/mechanics/lagrangian.hpp"
 
 namespace geomint::systems {
 

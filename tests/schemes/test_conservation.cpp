@@ -2,8 +2,8 @@
 #include <cmath>
 
 #include "catch.hpp"
-#include "geomint/lpf/integrator.hpp"
-#include "geomint/lpf/systems.hpp"
+#include "geomint/integrator.hpp"
+#include "geomint/mechanics/systems.hpp"
 #include "scalar_types.hpp"
 
 using namespace geomint;

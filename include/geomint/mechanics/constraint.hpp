@@ -9,7 +9,7 @@
 
 #include <array>
 
-#include "geomint/lpf/lagrangian.hpp"
+#include "geomint/mechanics/lagrangian.hpp"
 
 namespace geomint {
 

@@ -1,5 +1,5 @@
 /// Short versions of the order and symplecticity studies (the full tables: geomint-order and
-/// geomint-symplectic, README "What the schemes really are").
+/// geomint-symplectic, docs/results/analysis.md).
 #include <memory>
 
 #include "catch.hpp"
@@ -7,7 +7,7 @@
 #include "geomint/analysis/order_study.hpp"
 #include "geomint/analysis/reference_flow.hpp"
 #include "geomint/analysis/symplecticity.hpp"
-#include "geomint/lpf/integrator.hpp"
+#include "geomint/integrator.hpp"
 #include "scalar_types.hpp"
 
 using namespace geomint;

@@ -1,5 +1,5 @@
 #pragma once
-/// The constrained LPF integrator (LPF paper, eq. 4, 5, 14; DESIGN.md section 4).
+/// The constrained LPF integrator (LPF paper, eq. 4, 5, 14; docs/design.md, "Constraints").
 ///
 /// On [t_k, t_k + tau] the path is x(t) = sum_j phi_j((t - t_k)/tau) X_j as in the free
 /// integrator. At the interior nodes c_1..c_{m-1} the constrained Euler-Lagrange equations (4)
@@ -22,8 +22,8 @@
 #include <array>
 #include <string>
 
-#include "geomint/constraints/constraint.hpp"
-#include "geomint/lpf/integrator.hpp"
+#include "geomint/mechanics/constraint.hpp"
+#include "geomint/integrator.hpp"
 
 namespace geomint {
 

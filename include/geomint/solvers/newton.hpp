@@ -14,7 +14,7 @@
 
 #include <Eigen/Dense>
 
-#include "geomint/lpf/lagrangian.hpp"
+#include "geomint/mechanics/lagrangian.hpp"
 
 namespace geomint {
 

@@ -10,8 +10,8 @@
 
 #include <utility>
 
-#include "geomint/lpf/classical.hpp"
-#include "geomint/lpf/lpf.hpp"
+#include "geomint/schemes/classical.hpp"
+#include "geomint/schemes/lpf.hpp"
 
 namespace geomint {
 

@@ -11,7 +11,7 @@
 #include <limits>
 #include <string>
 
-#include "geomint/lpf/lpf.hpp"
+#include "geomint/schemes/lpf.hpp"
 
 namespace geomint {
 namespace detail {

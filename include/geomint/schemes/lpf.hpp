@@ -6,7 +6,7 @@
 /// The Euler-Lagrange equations hold at the interior nodes c_1..c_{m-1} (eq. 12), which makes
 /// the integral S of eq. (6) vanish, so dL_d/dx^k = -dL/dxdot(t_k) and dL_d/dx^{k+1} =
 /// dL/dxdot(t_{k+1}) (eq. 7, 9, 10); the discrete Euler-Lagrange equation (3) is the momentum
-/// match (11). One-step form (DESIGN.md section 3): given (q_k, p_k) solve for X_1..X_m from
+/// match (11). One-step form (docs/design.md, "The one-step form"): given (q_k, p_k) solve for X_1..X_m from
 /// eq. (12) and dL/dxdot(t_k) = p_k, then p_{k+1} = dL/dxdot(t_{k+1}).
 
 #include <array>
@@ -16,7 +16,7 @@
 #include <string>
 
 #include "geomint/core/differentiation.hpp"
-#include "geomint/lpf/newton.hpp"
+#include "geomint/solvers/newton.hpp"
 
 namespace geomint {
 namespace detail {
