@@ -12,6 +12,7 @@
 
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/lpf.hpp"
+#include "geomint/solvers/step_monitor.hpp"
 
 namespace geomint {
 
@@ -19,7 +20,8 @@ namespace geomint {
 template <class T, int n>
 struct phase_state {
   long step = 0;  ///< k
-  T t = T(0);     ///< t_k = k tau (accumulated)
+  T t = T(0);     ///< t_k = t_0 + k tau (computed from k, not accumulated)
+  T t0 = T(0);    ///< the time of step 0
   vec<T, n> q = vec<T, n>::Zero();
   vec<T, n> p = vec<T, n>::Zero();
 };
@@ -35,13 +37,22 @@ class integrator {
   using state = phase_state<T, n>;
 
   /// tau is checked at every step (an invalid tau is reported with the step index).
+  /// The Newton options are validated here (std::invalid_argument for max_iterations < 1 etc.).
   explicit integrator(const Sys& sys = Sys{}, const T& tau = T(1) / T(10), newton_options<T> opt = {})
-      : sys_(sys), engine_(sys), tau_(tau), opt_(opt) {}
+      : sys_(sys), engine_(sys), tau_(tau), opt_(opt) {
+    opt_.validate();
+  }
 
   const T& tau() const { return tau_; }
   void set_tau(const T& tau) { tau_ = tau; }
   const Sys& system_ref() const { return sys_; }
   newton_options<T>& options() { return opt_; }
+  /// The optional step monitor (off by default; see step_monitor.hpp). Validated when set.
+  void set_monitor(const step_monitor<T>& m) {
+    m.validate();
+    monitor_ = m;
+  }
+  const step_monitor<T>& monitor() const { return monitor_; }
 
   /// The state at t = 0 from (q_0, qdot_0): p_0 = dL/dqdot.
   state initial_state(const vector& q0, const vector& qdot0) const {
@@ -63,10 +74,14 @@ class integrator {
       st.reason = step_failure::non_finite_iterate;
       return st;
     }
+    if (monitor_.enabled) {
+      monitor_.check(energy(s.q, s.p), energy(q1, p1), st);
+      if (!st) return st;
+    }
     s.q = q1;
     s.p = p1;
-    s.t += tau_;
     ++s.step;
+    s.t = s.t0 + T(s.step) * tau_;
     return st;
   }
   /// One step; throws integration_error (reason and step index) on failure.
@@ -130,6 +145,7 @@ class integrator {
   typename Scheme::template engine<Sys, T> engine_;
   T tau_;
   newton_options<T> opt_;
+  step_monitor<T> monitor_;
 };
 
 }  // namespace geomint

@@ -26,6 +26,7 @@ enum class step_failure {
   singular_jacobian,   ///< the Newton matrix is singular to working precision
   non_finite_iterate,  ///< Newton produced NaN or infinity (divergence)
   no_convergence,      ///< the iteration budget ran out
+  left_regime,         ///< the step monitor refused the converged step (see step_monitor.hpp)
 };
 
 inline std::string_view to_string(step_failure f) {
@@ -36,6 +37,9 @@ inline std::string_view to_string(step_failure f) {
     case step_failure::singular_jacobian: return "singular Newton Jacobian";
     case step_failure::non_finite_iterate: return "Newton iterate became non-finite (divergence)";
     case step_failure::no_convergence: return "Newton did not converge";
+    case step_failure::left_regime:
+      return "step left the scheme's regime (relative energy change per step above the monitor's bound; "
+             "reduce tau)";
   }
   return "unknown";
 }
@@ -45,10 +49,15 @@ struct step_status {
   step_failure reason = step_failure::none;
   long step = 0;        ///< index k of the step k -> k+1 that was attempted
   int iterations = 0;   ///< Newton iterations used
+  /// For left_regime: the observed relative energy change and the monitor's bound (as double,
+  /// for the message only).
+  double observed = 0, bound = 0;
   explicit operator bool() const { return reason == step_failure::none; }
   std::string message() const {
-    return "geomint: step " + std::to_string(step) + ": " + std::string(to_string(reason)) + " (after " +
-           std::to_string(iterations) + " Newton iterations)";
+    std::string text = "geomint: step " + std::to_string(step) + ": " + std::string(to_string(reason));
+    if (reason == step_failure::left_regime)
+      text += ": |E_{k+1} - E_k| / max(|E_k|, |E_{k+1}|) = " + std::to_string(observed) + " > " + std::to_string(bound);
+    return text + " (after " + std::to_string(iterations) + " Newton iterations)";
   }
 };
 
@@ -65,10 +74,23 @@ class integration_error : public std::runtime_error {
 };
 
 /// Newton settings. The tolerance is `tolerance_ulps` units of epsilon relative to the iterate.
+///
+/// Both must be >= 1 (max_iterations at most 100000, tolerance_ulps at most 2^20): validate()
+/// throws std::invalid_argument otherwise, and every solve calls it, so that 0 or -5 iterations
+/// is an error with a reason, never a step that "fails to converge" without trying.
 template <class T>
 struct newton_options {
   int max_iterations = 50;
   int tolerance_ulps = 64;
+
+  void validate() const {
+    if (max_iterations < 1 || max_iterations > 100000)
+      throw std::invalid_argument("newton_options: max_iterations must be in 1..100000, got " +
+                                  std::to_string(max_iterations));
+    if (tolerance_ulps < 1 || tolerance_ulps > (1 << 20))
+      throw std::invalid_argument("newton_options: tolerance_ulps must be in 1..1048576, got " +
+                                  std::to_string(tolerance_ulps));
+  }
 };
 
 namespace detail {
@@ -76,6 +98,7 @@ namespace detail {
 /// Solves F(z) = 0 from z. `residual(z, F, J)` fills F and J = dF/dz.
 template <int N, class T, class Fn>
 step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt) {
+  opt.validate();
   using std::abs;
   const T eps = std::numeric_limits<T>::epsilon();
   const T tol = T(opt.tolerance_ulps) * eps;
@@ -131,6 +154,7 @@ struct jacobian_cache {
 template <int N, class T, class Fn>
 step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt, const T& scale,
                                     jacobian_cache<T, N>* cache = nullptr) {
+  opt.validate();
   using std::cbrt;
   const T eps = std::numeric_limits<T>::epsilon();
   const T tol = T(opt.tolerance_ulps) * eps;
