@@ -174,7 +174,8 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
                 << c.spec.nodes_label() << std::setw(4) << geomint::studies::m_label(c.spec) << std::right
                 << std::setw(8) << lo << std::setw(8) << go << std::setw(12) << ec << "  ";
       for (const T& e : r.global_errors) std::cout << ' ' << sci3(e);
-      if (regime != "ok") std::cout << "  OUTSIDE THE ASYMPTOTIC REGIME (" << regime << ")";
+      if (!r.ok) std::cout << "  FAILED";
+      else if (regime != "ok") std::cout << "  OUTSIDE THE ASYMPTOTIC REGIME (" << regime << ")";
       std::cout << '\n';
     }
   }
