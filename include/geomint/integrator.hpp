@@ -17,14 +17,50 @@
 namespace geomint {
 
 /// A point of the one-step (position-momentum) form.
+///
+/// Time is never accumulated: t_k = t0 + (k - k0) tau, where (k0, t0) is the step and time at
+/// which the current step size tau0 was first used, so 10^7 steps of tau = 1/10 end at exactly
+/// the nearest scalar to 10^6. Set `t` (and `step`) before the first step to start elsewhere.
 template <class T, int n>
 struct phase_state {
   long step = 0;  ///< k
-  T t = T(0);     ///< t_k = t_0 + k tau (computed from k, not accumulated)
-  T t0 = T(0);    ///< the time of step 0
+  T t = T(0);     ///< t_k
   vec<T, n> q = vec<T, n>::Zero();
   vec<T, n> p = vec<T, n>::Zero();
+  long k0 = 0;    ///< the step at which tau0 was first used
+  T t0 = T(0);    ///< t_{k0}
+  T tau0 = T(0);  ///< the step size in use since k0 (0 before the first step)
 };
+
+namespace detail {
+
+/// Commits a successful step to s: (q_{k+1}, p_{k+1}), k + 1 and t_{k+1} = t0 + (k + 1 - k0) tau.
+template <class T, int n>
+void commit_step(phase_state<T, n>& s, const vec<T, n>& q1, const vec<T, n>& p1, const T& tau) {
+  if (!(s.tau0 == tau)) {
+    s.k0 = s.step;
+    s.t0 = s.t;
+    s.tau0 = tau;
+  }
+  s.q = q1;
+  s.p = p1;
+  ++s.step;
+  s.t = s.t0 + T(s.step - s.k0) * tau;
+}
+
+/// The checks before a step: tau finite and > 0, the state finite.
+template <class T, class A, class B>
+step_status check_step_input(long k, const T& tau, const A& a, const B& b) {
+  step_status st;
+  st.step = k;
+  if (!is_finite(tau) || !(tau > T(0)))
+    st.reason = step_failure::invalid_step_size;
+  else if (!all_finite(a) || !all_finite(b))
+    st.reason = step_failure::non_finite_input;
+  return st;
+}
+
+}  // namespace detail
 
 template <class Scheme, lagrangian_system Sys, class T>
 class integrator {
@@ -78,10 +114,7 @@ class integrator {
       monitor_.check(energy(s.q, s.p), energy(q1, p1), st);
       if (!st) return st;
     }
-    s.q = q1;
-    s.p = p1;
-    ++s.step;
-    s.t = s.t0 + T(s.step) * tau_;
+    detail::commit_step(s, q1, p1, tau_);
     return st;
   }
   /// One step; throws integration_error (reason and step index) on failure.
@@ -131,15 +164,7 @@ class integrator {
   }
 
  private:
-  step_status check(long k, const vector& a, const vector& b) const {
-    step_status st;
-    st.step = k;
-    if (!detail::is_finite(tau_) || !(tau_ > T(0)))
-      st.reason = step_failure::invalid_step_size;
-    else if (!detail::all_finite(a) || !detail::all_finite(b))
-      st.reason = step_failure::non_finite_input;
-    return st;
-  }
+  step_status check(long k, const vector& a, const vector& b) const { return detail::check_step_input(k, tau_, a, b); }
 
   Sys sys_;
   typename Scheme::template engine<Sys, T> engine_;

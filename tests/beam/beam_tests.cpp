@@ -61,7 +61,7 @@ gb::options<T> opts(const T& dt, gb::scheme s = gb::scheme::poisson,
 
 }  // namespace
 
-TEST_CASE("material matrices of docs/design.md, "Beam conventions" (square section)", "[beam]") {
+TEST_CASE("material matrices of docs/design.md (beam conventions) (square section)", "[beam]") {
   // Exact arithmetic: a = 1/10 -> A = 1/100, I = 1/120000, J = 1/60000, G = 1e7/2.7.
   using T = double;
   const auto m = gb::material<T>::square_section(T(1) / T(10), T(1000), T(1e7), T(35) / T(100));
@@ -225,20 +225,20 @@ TEST_CASE("error paths: invalid input, unstable dt, failed Newton solve", "[beam
     CHECK_THROWS_AS(gb::integrator<T>(pc.mat, grid, pc.mu0, pc.gamma0, opts<T>(T(1) / T(10000))), std::invalid_argument);
   }
 
-  // dt = 5e-4 is beyond the stability limit ds/c = 2.09e-4: a step_error naming the step, the
-  // state left at the last good step (finite).
+  // dt = 5e-4 is beyond the stability limit ds/c = 2.09e-4: an integration_error naming the
+  // step k (k -> k+1, k = steps taken), the state left at the last good step (finite).
   {
     auto b = pc.make(opts<T>(T(5) / T(10000)));
     long failed = -1;
     std::string msg;
     try {
       b.advance(1000);
-    } catch (const gb::step_error& e) {
+    } catch (const geomint::integration_error& e) {
       failed = e.step();
       msg = e.what();
     }
     REQUIRE(failed > 0);
-    CHECK(b.steps_taken() == failed - 1);
+    CHECK(b.steps_taken() == failed);
     CHECK(msg.find("step " + std::to_string(failed)) != std::string::npos);
     CHECK(msg.find("stability limit") != std::string::npos);
     for (const auto& m : b.mu()) CHECK(m.allFinite());
@@ -259,10 +259,10 @@ TEST_CASE("error paths: invalid input, unstable dt, failed Newton solve", "[beam
     bool thrown = false;
     try {
       b.step();
-    } catch (const gb::step_error& e) {
+    } catch (const geomint::integration_error& e) {
       thrown = true;
-      CHECK(e.reason() == gb::step_error::kind::newton_failure);
-      CHECK(e.step() == 1);
+      CHECK(e.reason() == geomint::step_failure::no_convergence);
+      CHECK(e.step() == 0);
       CHECK(e.node() == 3);
       CHECK(std::string(e.what()).find("Newton") != std::string::npos);
     }

@@ -175,7 +175,7 @@ int run(const config& c) {
       record(n);
       if (!outputs_ok()) break;  // reported below
     }
-  } catch (const gb::step_error& e) {
+  } catch (const geomint::integration_error& e) {
     std::cerr << e.what() << "\n";
     status = cli::exit_run_failure;
   }

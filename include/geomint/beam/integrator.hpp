@@ -10,8 +10,10 @@
 ///      zeta_j^{n+1} / the average of the two (options; see docs/results/beam.md for what each does to
 ///      the momentum).
 /// The step is computed into separate buffers and committed only when every value is finite,
-/// every Newton solve has converged and the energy has not blown up; otherwise a `step_error`
-/// naming the step is thrown and the state stays at the last good step.
+/// every Newton solve has converged and the energy has not blown up; otherwise `try_step`
+/// returns the failure (reason, step index, node) and `step` throws it as an integration_error
+/// (solvers/step_status.hpp, shared with the other integrators); the state stays at the last
+/// good step.
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +28,7 @@
 #include "geomint/beam/kernels.hpp"
 #include "geomint/beam/material.hpp"
 #include "geomint/lie/se3.hpp"
+#include "geomint/solvers/step_status.hpp"
 
 namespace geomint::beam {
 
@@ -64,20 +67,6 @@ struct options {
   /// unstable (the scheme keeps the energy within O(dt) of its initial value when stable).
   /// Must be finite and > 1 (checked by the integrator's constructor).
   T energy_growth_limit = T(100);
-};
-
-/// A step could not be completed; the integrator state is the one before the step.
-class step_error : public std::runtime_error {
- public:
-  enum class kind { newton_failure, non_finite, energy_growth };
-  step_error(long step, kind k, int node, const std::string& what) : std::runtime_error(what), step_(step), kind_(k), node_(node) {}
-  long step() const { return step_; }  ///< the step being computed (1 = the first step)
-  kind reason() const { return kind_; }
-  int node() const { return node_; }   ///< the node concerned, or -1
- private:
-  long step_;
-  kind kind_;
-  int node_;
 };
 
 /// Energies and spatial momentum of a beam state.
@@ -225,8 +214,20 @@ class integrator {
     return d;
   }
 
-  /// Advances one step; throws step_error (state unchanged) if it cannot be completed.
+  /// Advances one step; throws integration_error (state unchanged) if it cannot be completed.
   void step() {
+    const step_status st = try_step();
+    if (!st) throw integration_error(st, failure_detail_);
+  }
+
+  /// Advances n steps; throws on the first failure.
+  void advance(long n) {
+    for (long i = 0; i < n; ++i) step();
+  }
+
+  /// One step without throwing: the failure (reason, step index k = steps taken, node) or
+  /// success; on failure the state is unchanged and `failure_detail()` explains it.
+  step_status try_step() {
     const int J = grid_.segments;
     const T dt = opt_.dt, h = opt_.dt / T(2);
     const long n1 = step_ + 1;
@@ -256,8 +257,8 @@ class integrator {
       stats_.solves += 1;
       stats_.iterations += r.iterations;
       stats_.max_iterations = std::max(stats_.max_iterations, r.iterations);
-      if (!r.finite) fail_non_finite(n1, j, "the Newton solve of scheme (53)");
-      if (!r.converged) fail_newton(n1, j, r);
+      if (!r.finite) return fail_non_finite(n1, j, "the Newton solve of scheme (53)");
+      if (!r.converged) return fail_newton(n1, j, r);
       mu_next_[j] = poisson ? vec6<T>(T(2) * x - m) : x;
       zeta_next_[j] = d1inv_.cwiseProduct(mu_next_[j]);
     }
@@ -283,20 +284,20 @@ class integrator {
     const T e = ds_ * (k + p) / T(2);
     if (!(e - e == T(0))) {
       for (int j = 0; j <= J; ++j)
-        if (!mu_next_[j].allFinite()) fail_non_finite(n1, j, "scheme (53)");
+        if (!mu_next_[j].allFinite()) return fail_non_finite(n1, j, "scheme (53)");
       for (int j = 0; j < J; ++j)
-        if (!gamma_next_[j].allFinite()) fail_non_finite(n1, j, "scheme (54) (segment j + 1/2)");
-      fail_non_finite(n1, -1, "the energy");
+        if (!gamma_next_[j].allFinite()) return fail_non_finite(n1, j, "scheme (54) (segment j + 1/2)");
+      return fail_non_finite(n1, -1, "the energy");
     }
     for (int j = 0; j <= J; ++j)
-      if (!g_next_[j].R.allFinite() || !g_next_[j].x.allFinite()) fail_non_finite(n1, j, "the Cayley reconstruction (55)");
+      if (!g_next_[j].R.allFinite() || !g_next_[j].x.allFinite())
+        return fail_non_finite(n1, j, "the Cayley reconstruction (55)");
     if (e > opt_.energy_growth_limit * energy0_) {
       std::ostringstream os;
-      os << "geomint::beam: step " << n1 << " (t = " << time_string(n1) << "): the total energy grew from " << energy0_
-         << " to " << e << " (more than " << opt_.energy_growth_limit
-         << " times): the time step dt = " << opt_.dt << " is beyond the stability limit (estimate ds/c_max = "
-         << stability_estimate() << ")";
-      throw step_error(n1, step_error::kind::energy_growth, -1, os.str());
+      os << "t = " << time_string(n1) << ": the total energy grew from " << energy0_ << " to " << e << " (more than "
+         << opt_.energy_growth_limit << " times): the time step dt = " << opt_.dt
+         << " is beyond the stability limit (estimate ds/c_max = " << stability_estimate() << ")";
+      return fail(step_failure::energy_growth, -1, 0, os.str());
     }
     mu_.swap(mu_next_);
     zeta_.swap(zeta_next_);
@@ -305,12 +306,12 @@ class integrator {
     force_.swap(force_next_);
     g_.swap(g_next_);
     step_ = n1;
+    failure_detail_.clear();
+    return {};
   }
 
-  /// Advances n steps.
-  void advance(long n) {
-    for (long i = 0; i < n; ++i) step();
-  }
+  /// Why the last failed step failed (empty after a successful step).
+  const std::string& failure_detail() const { return failure_detail_; }
 
  private:
   // sigma = D2 gamma, force = [gamma + e2, sigma]^*.
@@ -338,22 +339,32 @@ class integrator {
     return os.str();
   }
 
-  [[noreturn]] void fail_non_finite(long n1, int node, const char* where) const {
+  step_status fail(step_failure reason, int node, int iterations, std::string detail) {
+    failure_detail_ = std::move(detail);
+    step_status st;
+    st.reason = reason;
+    st.step = step_;
+    st.node = node;
+    st.iterations = iterations;
+    return st;
+  }
+
+  step_status fail_non_finite(long n1, int node, const char* where) {
     std::ostringstream os;
-    os << "geomint::beam: step " << n1 << " (t = " << time_string(n1) << "): non-finite value in " << where;
+    os << "t = " << time_string(n1) << ": non-finite value in " << where;
     if (node >= 0) os << " at node/segment " << node;
     os << "; the time step dt = " << opt_.dt << " is probably beyond the stability limit (estimate ds/c_max = "
        << stability_estimate() << ")";
-    throw step_error(n1, step_error::kind::non_finite, node, os.str());
+    return fail(step_failure::non_finite_iterate, node, 0, os.str());
   }
 
-  [[noreturn]] void fail_newton(long n1, int node, const newton_result<T>& r) const {
+  step_status fail_newton(long n1, int node, const newton_result<T>& r) {
     std::ostringstream os;
-    os << "geomint::beam: step " << n1 << " (t = " << time_string(n1) << "): the Newton solve of scheme (53) ("
-       << to_string(opt_.method) << ") at node " << node << " did not converge in " << opt_.max_newton_iterations
-       << " iterations (weighted residual " << r.residual << " > tolerance " << r.tolerance << "); the time step dt = "
-       << opt_.dt << " is probably beyond the stability limit (estimate ds/c_max = " << stability_estimate() << ")";
-    throw step_error(n1, step_error::kind::newton_failure, node, os.str());
+    os << "t = " << time_string(n1) << ": the Newton solve of scheme (53) (" << to_string(opt_.method) << ") at node "
+       << node << " did not converge in " << opt_.max_newton_iterations << " iterations (weighted residual "
+       << r.residual << " > tolerance " << r.tolerance << "); the time step dt = " << opt_.dt
+       << " is probably beyond the stability limit (estimate ds/c_max = " << stability_estimate() << ")";
+    return fail(step_failure::no_convergence, node, r.iterations, os.str());
   }
 
   material<T> mat_;
@@ -363,6 +374,7 @@ class integrator {
   bool structured_ = false;
   T ds_;
   long step_ = 0;
+  std::string failure_detail_;
   T energy0_ = T(0);
   newton_statistics stats_;
   state_vector mu_, zeta_, gamma_, sigma_, force_;

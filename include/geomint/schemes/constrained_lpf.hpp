@@ -350,22 +350,18 @@ class constrained_integrator {
     return s;
   }
 
+  /// One step without throwing; on failure s is unchanged.
   step_status try_step(state& s) const {
-    step_status st;
-    st.step = s.step;
-    using std::isfinite;
-    if (!detail::is_finite(tau_) || !(tau_ > T(0))) {
-      st.reason = step_failure::invalid_step_size;
-      return st;
-    }
-    if (!detail::all_finite(s.q) || !detail::all_finite(s.p)) {
-      st.reason = step_failure::non_finite_input;
-      return st;
-    }
+    step_status st = detail::check_step_input(s.step, tau_, s.q, s.p);
+    if (!st) return st;
     vector q1, p1;
     st = engine_.one_step(s.q, s.p, tau_, q1, p1, opt_);
     st.step = s.step;
     if (!st) return st;
+    if (!detail::all_finite(q1) || !detail::all_finite(p1)) {
+      st.reason = step_failure::non_finite_iterate;
+      return st;
+    }
     if (monitor_.enabled) {
       state next = s;
       next.q = q1;
@@ -373,16 +369,17 @@ class constrained_integrator {
       monitor_.check(energy(s), energy(next), st);
       if (!st) return st;
     }
-    s.q = q1;
-    s.p = p1;
-    ++s.step;
-    s.t = s.t0 + T(s.step) * tau_;
+    detail::commit_step(s, q1, p1, tau_);
     return st;
   }
-
+  /// One step; throws integration_error (reason and step index) on failure.
   void step(state& s) const {
     const step_status st = try_step(s);
     if (!st) throw integration_error(st);
+  }
+  /// `count` steps; throws on the first failure.
+  void advance(state& s, long count) const {
+    for (long i = 0; i < count; ++i) step(s);
   }
 
   /// The two-step form; `drop` gives the paper's printed scheme (23) for the circle.

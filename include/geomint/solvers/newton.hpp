@@ -1,5 +1,5 @@
 #pragma once
-/// Newton's method with fixed-size Eigen matrices, and the errors a step can report.
+/// Newton's method with fixed-size Eigen matrices (full, and simplified with a reusable factorisation).
 ///
 /// Convergence is declared when the Newton correction falls below a multiple of the scalar's
 /// epsilon (relative to the iterate), or when, already below eps^(2/3), it stops contracting
@@ -14,64 +14,11 @@
 
 #include <Eigen/Dense>
 
-#include "geomint/mechanics/lagrangian.hpp"
+#include "geomint/linalg/lu_small.hpp"
+#include "geomint/linalg/types.hpp"
+#include "geomint/solvers/step_status.hpp"
 
 namespace geomint {
-
-/// Why a step failed.
-enum class step_failure {
-  none,
-  invalid_step_size,   ///< tau <= 0 or not finite
-  non_finite_input,    ///< q, p (or x^{k-1}, x^k) contain NaN or infinity
-  singular_jacobian,   ///< the Newton matrix is singular to working precision
-  non_finite_iterate,  ///< Newton produced NaN or infinity (divergence)
-  no_convergence,      ///< the iteration budget ran out
-  left_regime,         ///< the step monitor refused the converged step (see step_monitor.hpp)
-};
-
-inline std::string_view to_string(step_failure f) {
-  switch (f) {
-    case step_failure::none: return "ok";
-    case step_failure::invalid_step_size: return "invalid step size (tau must be finite and > 0)";
-    case step_failure::non_finite_input: return "non-finite input state";
-    case step_failure::singular_jacobian: return "singular Newton Jacobian";
-    case step_failure::non_finite_iterate: return "Newton iterate became non-finite (divergence)";
-    case step_failure::no_convergence: return "Newton did not converge";
-    case step_failure::left_regime:
-      return "step left the scheme's regime (relative energy change per step above the monitor's bound; "
-             "reduce tau)";
-  }
-  return "unknown";
-}
-
-/// Outcome of one step: success, or the reason and the index of the failing step.
-struct step_status {
-  step_failure reason = step_failure::none;
-  long step = 0;        ///< index k of the step k -> k+1 that was attempted
-  int iterations = 0;   ///< Newton iterations used
-  /// For left_regime: the observed relative energy change and the monitor's bound (as double,
-  /// for the message only).
-  double observed = 0, bound = 0;
-  explicit operator bool() const { return reason == step_failure::none; }
-  std::string message() const {
-    std::string text = "geomint: step " + std::to_string(step) + ": " + std::string(to_string(reason));
-    if (reason == step_failure::left_regime)
-      text += ": |E_{k+1} - E_k| / max(|E_k|, |E_{k+1}|) = " + std::to_string(observed) + " > " + std::to_string(bound);
-    return text + " (after " + std::to_string(iterations) + " Newton iterations)";
-  }
-};
-
-/// Thrown by the throwing stepping functions; carries the reason and the step index.
-class integration_error : public std::runtime_error {
- public:
-  explicit integration_error(const step_status& s) : std::runtime_error(s.message()), status_(s) {}
-  step_failure reason() const { return status_.reason; }
-  long step() const { return status_.step; }
-  const step_status& status() const { return status_; }
-
- private:
-  step_status status_;
-};
 
 /// Newton settings. The tolerance is `tolerance_ulps` units of epsilon relative to the iterate.
 ///
