@@ -31,7 +31,7 @@ measure() {
   local ns
   ns=$(awk -v s="$seconds" -v n="$n" 'BEGIN { printf "%.1f", 1e9 * s / n }')
   local energy
-  energy=$(grep -E 'max \|energy - energy0\||energy:' /tmp/long_runs_out.$$ | tr '\n' ' ')
+  energy=$(grep -E 'max \|energy - energy0\||energy:' /tmp/long_runs_out.$$ | tr '\n' ' ' | sed 's/|/!/g')
   printf '| %s | %s | %s | %s | %s | %s |\n' "$label" "$n" "$seconds" "$ns" "$rss" "$energy"
   rm -f /tmp/long_runs_out.$$
 }
