@@ -13,6 +13,7 @@
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/lpf.hpp"
 #include "geomint/schemes/paper_schemes.hpp"
+#include "geomint/solvers/step_monitor.hpp"
 
 namespace geomint {
 
@@ -73,13 +74,22 @@ class integrator {
   using state = phase_state<T, n>;
 
   /// tau is checked at every step (an invalid tau is reported with the step index).
+  /// The Newton options are validated here (std::invalid_argument for max_iterations < 1 etc.).
   explicit integrator(const Sys& sys = Sys{}, const T& tau = T(1) / T(10), newton_options<T> opt = {})
-      : sys_(sys), engine_(sys), tau_(tau), opt_(opt) {}
+      : sys_(sys), engine_(sys), tau_(tau), opt_(opt) {
+    opt_.validate();
+  }
 
   const T& tau() const { return tau_; }
   void set_tau(const T& tau) { tau_ = tau; }
   const Sys& system_ref() const { return sys_; }
   newton_options<T>& options() { return opt_; }
+  /// The optional step monitor (off by default; see step_monitor.hpp). Validated when set.
+  void set_monitor(const step_monitor<T>& m) {
+    m.validate();
+    monitor_ = m;
+  }
+  const step_monitor<T>& monitor() const { return monitor_; }
 
   /// The state at t = 0 from (q_0, qdot_0): p_0 = dL/dqdot.
   state initial_state(const vector& q0, const vector& qdot0) const {
@@ -100,6 +110,10 @@ class integrator {
     if (!detail::all_finite(q1) || !detail::all_finite(p1)) {
       st.reason = step_failure::non_finite_iterate;
       return st;
+    }
+    if (monitor_.enabled) {
+      monitor_.check(energy(s.q, s.p), energy(q1, p1), st);
+      if (!st) return st;
     }
     detail::commit_step(s, q1, p1, tau_);
     return st;
@@ -157,6 +171,7 @@ class integrator {
   typename Scheme::template engine<Sys, T> engine_;
   T tau_;
   newton_options<T> opt_;
+  step_monitor<T> monitor_;
 };
 
 }  // namespace geomint

@@ -208,6 +208,22 @@ TEST_CASE("error paths: invalid input, unstable dt, failed Newton solve", "[beam
   auto bad = pc.mu0;
   bad[7](2) = std::numeric_limits<T>::quiet_NaN();
   CHECK_THROWS_AS(gb::integrator<T>(pc.mat, pc.grid, bad, pc.gamma0, opts<T>(T(1) / T(10000))), std::invalid_argument);
+  // A NaN energy_growth_limit would make the guard `E > limit E0` always false (silently off);
+  // an infinite one disables it as well; both are refused, as is a limit <= 1.
+  for (const T limit : {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(), T(1), T(0)}) {
+    gb::options<T> o = opts<T>(T(1) / T(10000));
+    o.energy_growth_limit = limit;
+    CHECK_THROWS_AS(pc.make(o), std::invalid_argument);
+  }
+  // A grid of infinite or NaN length is refused where it is built (it used to be accepted and
+  // step 1 then blamed dt), and so is one whose length is changed afterwards.
+  CHECK_THROWS_AS(gb::staggered_grid<T>(std::numeric_limits<T>::infinity(), 100), std::invalid_argument);
+  CHECK_THROWS_AS(gb::staggered_grid<T>(std::numeric_limits<T>::quiet_NaN(), 100), std::invalid_argument);
+  {
+    auto grid = pc.grid;
+    grid.length = std::numeric_limits<T>::infinity();
+    CHECK_THROWS_AS(gb::integrator<T>(pc.mat, grid, pc.mu0, pc.gamma0, opts<T>(T(1) / T(10000))), std::invalid_argument);
+  }
 
   // dt = 5e-4 is beyond the stability limit ds/c = 2.09e-4: an integration_error naming the
   // step k (k -> k+1, k = steps taken), the state left at the last good step (finite).

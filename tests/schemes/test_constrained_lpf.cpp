@@ -9,6 +9,9 @@
 #include <geomint/mechanics/constrained_systems.hpp>
 #include <geomint/schemes/paper23.hpp>
 
+#include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "catch.hpp"
@@ -186,6 +189,21 @@ TEMPLATE_LIST_TEST_CASE("constrained LPF: bad input gets a clear error", "[const
   CHECK(integrator.violation(projected) <= eps_tol<T>(4));
   CHECK(integrator.velocity_violation(projected) <= eps_tol<T>(4));
   CHECK(projected.p[0] == T(0));
+  // Non-finite data: named as such (it used to be reported as a singular constraint Jacobian).
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  for (const auto& [q, v] : {std::pair{vec<T, 2>(nan, T(0)), vec<T, 2>(T(0), T(1))},
+                             std::pair{vec<T, 2>(T(1), T(0)), vec<T, 2>(T(0), nan)}}) {
+    try {
+      (void)integrator.project_initial_state(q, v);
+      FAIL("no error for a non-finite initial state");
+    } catch (const std::invalid_argument& e) {
+      CHECK(std::string(e.what()).find("not finite") != std::string::npos);
+    }
+  }
+  // Newton options are checked where they are set.
+  geomint::newton_options<T> zero_iterations;
+  zero_iterations.max_iterations = 0;
+  CHECK_THROWS_AS(I({}, {}, T(1) / T(10), zero_iterations), std::invalid_argument);
   // tau <= 0 and NaN state: integration_error naming the reason and the step.
   const I zero_step({}, {}, T(0));
   auto s = integrator.initial_state(vec<T, 2>(T(1), T(0)), vec<T, 2>(T(0), T(1)));

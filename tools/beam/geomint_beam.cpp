@@ -12,14 +12,16 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
-#include <memory>
+#include <optional>
+#include <sstream>
+#include <utility>
 #include <string>
 #include <vector>
 
+#include "cli.hpp"
 #include "geomint/beam/beam.hpp"
 
 namespace {
@@ -30,41 +32,24 @@ namespace gb = geomint::beam;
 const char* usage_text =
     "usage: geomint-beam [options]\n"
     "  Runs the geometrically exact beam of the beam paper (Chen & Shi 2025, section 4).\n"
-    "  --steps N          number of time steps (default 1000)\n"
+    "  --steps N          number of time steps (default 1000; 0..10^12)\n"
     "  --dt DT            time step in s (default 1e-4)\n"
-    "  --nodes N          number of nodes J+1 (default 101); the initial data of section 4\n"
+    "  --nodes N          number of nodes J+1 (default 101; 2..10^6); the initial data of section 4\n"
     "                     use sin(j pi / J)\n"
     "  --scheme S         poisson (eq. 53, default) or hamel (trapezoidal bracket term)\n"
     "  --every K          write a CSV row every K steps, step 0 included (default 1)\n"
     "  --csv FILE         write step,t,kinetic,potential,total,Px,Py,Pz,Lx,Ly,Lz to FILE\n"
     "  --centreline FILE  write step,t,node,s,x,y,z of the centreline at --snapshots times\n"
-    "  --snapshots M      number of evenly spaced centreline snapshots (default 6, >= 2)\n"
+    "  --snapshots M      number of evenly spaced centreline snapshots (default 6, 2..10^4)\n"
     "  --drift FILE       write step,t,max_position,max_rotation: per-node reconstruction (55)\n"
     "                     against the strain-consistent one, every K steps\n"
     "  --cayley V         velocity in (55): previous (zeta^n, as printed; default), current\n"
     "                     (zeta^{n+1}) or midpoint\n"
     "  --reconstruction R per-node (default) or strain: configurations used for the momentum\n"
     "                     and the centreline\n"
-    "  --help             this text\n";
-
-[[noreturn]] void usage_error(const std::string& msg) {
-  std::cerr << "geomint-beam: " << msg << "\n" << usage_text;
-  std::exit(2);
-}
-
-long parse_long(const std::string& flag, const std::string& v, long min) {
-  char* end = nullptr;
-  const long x = std::strtol(v.c_str(), &end, 10);
-  if (v.empty() || *end != '\0' || x < min) usage_error("bad value '" + v + "' for " + flag + " (integer >= " + std::to_string(min) + ")");
-  return x;
-}
-
-double parse_double(const std::string& flag, const std::string& v) {
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !std::isfinite(x)) usage_error("bad value '" + v + "' for " + flag);
-  return x;
-}
+    "  --help             this text\n"
+    "  Flags take their value as --flag V or --flag=V. Exit status: 0 ok, 2 bad command line,\n"
+    "  3 a step failed (message on stderr), 4 an output could not be written.\n";
 
 struct config {
   long steps = 1000;
@@ -78,62 +63,55 @@ struct config {
   gb::reconstruction recon = gb::reconstruction::per_node;
 };
 
-config parse(int argc, char** argv) {
-  config c;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::cout << usage_text;
-      std::exit(0);
-    }
-    if (a.rfind("--", 0) != 0) usage_error("unexpected argument '" + a + "'");
-    if (i + 1 >= argc) usage_error("missing value for " + a);
-    const std::string v = argv[++i];
-    if (a == "--steps") c.steps = parse_long(a, v, 0);
-    else if (a == "--dt") c.dt = parse_double(a, v);
-    else if (a == "--nodes") c.nodes = parse_long(a, v, 2);
-    else if (a == "--every") c.every = parse_long(a, v, 1);
-    else if (a == "--snapshots") c.snapshots = parse_long(a, v, 2);
-    else if (a == "--csv") c.csv = v;
-    else if (a == "--centreline") c.centreline = v;
-    else if (a == "--drift") c.drift = v;
-    else if (a == "--scheme") {
-      if (v == "poisson") c.method = gb::scheme::poisson;
-      else if (v == "hamel") c.method = gb::scheme::hamel;
-      else usage_error("--scheme must be poisson or hamel, not '" + v + "'");
-    } else if (a == "--cayley") {
-      if (v == "previous") c.velocity = gb::cayley_velocity::previous;
-      else if (v == "current") c.velocity = gb::cayley_velocity::current;
-      else if (v == "midpoint") c.velocity = gb::cayley_velocity::midpoint;
-      else usage_error("--cayley must be previous, current or midpoint, not '" + v + "'");
-    } else if (a == "--reconstruction") {
-      if (v == "per-node") c.recon = gb::reconstruction::per_node;
-      else if (v == "strain") c.recon = gb::reconstruction::strain_consistent;
-      else usage_error("--reconstruction must be per-node or strain, not '" + v + "'");
-    } else {
-      usage_error("unknown option '" + a + "'");
-    }
-  }
-  if (!(c.dt > 0)) usage_error("--dt must be > 0");
-  if (c.nodes > 1000000) usage_error("--nodes is limited to 1000000");
-  return c;
+/// The stated bounds of the counts.
+constexpr long max_steps = 1'000'000'000'000L, max_nodes = 1000000;
+
+/// Fills c from the command line; returns the exit status when the tool should stop (--help,
+/// usage error).
+std::optional<int> parse(int argc, char** argv, config& c) {
+  namespace cli = geomint::cli;
+  cli::parser cl("geomint-beam", usage_text);
+  cl.value("--steps", [&](const std::string& v) { c.steps = cli::parse_integer<long>("--steps", v, 0, max_steps); })
+      .value("--dt", [&](const std::string& v) { c.dt = cli::parse_real("--dt", v, cli::real_bound::positive); })
+      .value("--nodes", [&](const std::string& v) { c.nodes = cli::parse_integer<long>("--nodes", v, 2, max_nodes); })
+      .value("--every", [&](const std::string& v) { c.every = cli::parse_integer<long>("--every", v, 1, max_steps); })
+      .value("--snapshots", [&](const std::string& v) { c.snapshots = cli::parse_integer<long>("--snapshots", v, 2, 10000); })
+      .value("--csv", [&](const std::string& v) { c.csv = v; })
+      .value("--centreline", [&](const std::string& v) { c.centreline = v; })
+      .value("--drift", [&](const std::string& v) { c.drift = v; })
+      .value("--scheme", [&](const std::string& v) {
+        c.method = cli::parse_choice("--scheme", v, {"poisson", "hamel"}) == "poisson" ? gb::scheme::poisson : gb::scheme::hamel;
+      })
+      .value("--cayley", [&](const std::string& v) {
+        const std::string x = cli::parse_choice("--cayley", v, {"previous", "current", "midpoint"});
+        c.velocity = x == "previous"  ? gb::cayley_velocity::previous
+                     : x == "current" ? gb::cayley_velocity::current
+                                      : gb::cayley_velocity::midpoint;
+      })
+      .value("--reconstruction", [&](const std::string& v) {
+        c.recon = cli::parse_choice("--reconstruction", v, {"per-node", "strain"}) == "per-node"
+                      ? gb::reconstruction::per_node
+                      : gb::reconstruction::strain_consistent;
+      });
+  return cl.parse(argc, argv);
 }
 
-std::unique_ptr<std::ofstream> open_out(const std::string& path) {
-  if (path.empty()) return nullptr;
-  auto f = std::make_unique<std::ofstream>(path);
-  if (!*f) {
-    std::cerr << "geomint-beam: cannot open '" << path << "' for writing\n";
-    std::exit(1);
-  }
-  *f << std::setprecision(std::numeric_limits<T>::max_digits10);
-  return f;
+/// Values joined by commas, at max_digits10 digits (a CSV row without its newline).
+template <class... Values>
+std::string csv_row(const Values&... values) {
+  std::ostringstream out;
+  out << std::setprecision(std::numeric_limits<T>::max_digits10);
+  bool first = true;
+  ((out << (first ? "" : ",") << values, first = false), ...);
+  return out.str();
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  const config c = parse(argc, argv);
+namespace cli = geomint::cli;
+
+/// The run of a parsed command line; returns the exit status.
+int run(const config& c) {
   using clock = std::chrono::steady_clock;
   const auto t_start = clock::now();
 
@@ -145,12 +123,21 @@ int main(int argc, char** argv) {
   opt.configurations = c.recon;
   gb::integrator<T> beam = pc.make(opt);
 
-  auto csv = open_out(c.csv);
-  auto cl = open_out(c.centreline);
-  auto dr = open_out(c.drift);
-  if (csv) *csv << "step,t,kinetic,potential,total,Px,Py,Pz,Lx,Ly,Lz\n";
-  if (cl) *cl << "step,t,node,s,x,y,z\n";
-  if (dr) *dr << "step,t,max_position,max_rotation\n";
+  // The output files, written in whole rows (a failed write leaves each file valid up to its
+  // last complete row and stops the run with a message).
+  cli::csv_file csv_file, centreline_file, drift_file;
+  for (auto [file, path] : {std::pair{&csv_file, &c.csv}, {&centreline_file, &c.centreline}, {&drift_file, &c.drift}})
+    if (!path->empty() && !file->open(*path)) {
+      std::cerr << "geomint-beam: " << file->error() << '\n';
+      return cli::exit_output;
+    }
+  cli::csv_file* csv = csv_file.is_open() ? &csv_file : nullptr;
+  cli::csv_file* cl = centreline_file.is_open() ? &centreline_file : nullptr;
+  cli::csv_file* dr = drift_file.is_open() ? &drift_file : nullptr;
+  if (csv) csv->row("step,t,kinetic,potential,total,Px,Py,Pz,Lx,Ly,Lz");
+  if (cl) cl->row("step,t,node,s,x,y,z");
+  if (dr) dr->row("step,t,max_position,max_rotation");
+  auto outputs_ok = [&] { return (!csv || csv->ok()) && (!cl || cl->ok()) && (!dr || dr->ok()); };
 
   std::vector<long> snap;
   for (long i = 0; i < c.snapshots; ++i) snap.push_back((c.steps * i) / (c.snapshots - 1));
@@ -164,18 +151,16 @@ int main(int argc, char** argv) {
       max_dP = std::max(max_dP, (d.P - d0.P).norm());
       max_dL = std::max(max_dL, (d.L - d0.L).norm());
       if (csv && n % c.every == 0)
-        *csv << d.step << ',' << d.t << ',' << d.kinetic << ',' << d.potential << ',' << d.total << ',' << d.P(0) << ','
-             << d.P(1) << ',' << d.P(2) << ',' << d.L(0) << ',' << d.L(1) << ',' << d.L(2) << '\n';
+        csv->row(csv_row(d.step, d.t, d.kinetic, d.potential, d.total, d.P(0), d.P(1), d.P(2), d.L(0), d.L(1), d.L(2)));
       if (dr && n % c.every == 0) {
         const auto x = beam.drift();
-        *dr << n << ',' << beam.time() << ',' << x.max_position << ',' << x.max_rotation << '\n';
+        dr->row(csv_row(n, beam.time(), x.max_position, x.max_rotation));
       }
     }
     if (cl && std::find(snap.begin(), snap.end(), n) != snap.end()) {
       const auto g = beam.configurations();
       for (std::size_t j = 0; j < g.size(); ++j)
-        *cl << n << ',' << beam.time() << ',' << j << ',' << pc.grid.node_s(static_cast<int>(j)) << ',' << g[j].x(0) << ','
-            << g[j].x(1) << ',' << g[j].x(2) << '\n';
+        cl->row(csv_row(n, beam.time(), j, pc.grid.node_s(static_cast<int>(j)), g[j].x(0), g[j].x(1), g[j].x(2)));
     }
   };
 
@@ -188,12 +173,12 @@ int main(int argc, char** argv) {
       beam.step();
       stepping += clock::now() - a;
       record(n);
+      if (!outputs_ok()) break;  // reported below
     }
   } catch (const geomint::integration_error& e) {
     std::cerr << e.what() << "\n";
-    status = 3;
+    status = cli::exit_run_failure;
   }
-  if (csv) csv->flush();
   const double ms_step = std::chrono::duration<double, std::milli>(stepping).count();
   const double ms_total = std::chrono::duration<double, std::milli>(clock::now() - t_start).count();
 
@@ -209,5 +194,19 @@ int main(int argc, char** argv) {
             << ", max |L - L0| = " << max_dL << "\n";
   std::cout << "  Newton: " << (st.solves ? double(st.iterations) / double(st.solves) : 0.0) << " iterations per node solve (max "
             << st.max_iterations << ")\n";
-  return status;
+  for (cli::csv_file* f : {csv, cl, dr})
+    if (f) status = f->finish("geomint-beam", status);
+  return cli::finish_stdout("geomint-beam", status);
+}
+
+int main(int argc, char** argv) {
+  config c;
+  if (const auto done = parse(argc, argv, c)) return *done;
+  try {
+    return run(c);
+  } catch (const std::exception& e) {  // e.g. std::invalid_argument from the integrator's checks
+    std::cout.flush();
+    std::cerr << "geomint-beam: " << e.what() << '\n';
+    return 1;
+  }
 }

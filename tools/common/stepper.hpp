@@ -14,6 +14,7 @@
 
 #include "geomint/core/multiprecision.hpp"
 #include "geomint/solvers/newton.hpp"
+#include "geomint/solvers/step_monitor.hpp"
 
 namespace geomint::tools {
 
@@ -66,13 +67,22 @@ class stepper {
   virtual int dof() const = 0;
   /// The scheme's name, e.g. "lpf(m=4, gauss_interior, lagrange)".
   virtual std::string name() const = 0;
-  /// One step; checks tau > 0 and finite data, leaves q1/p1 untouched on failure.
+  /// The step monitor applied by step() (off unless set; see geomint/solvers/step_monitor.hpp).
+  void set_monitor(const step_monitor<T>& m) {
+    m.validate();
+    monitor_ = m;
+  }
+  const step_monitor<T>& monitor() const { return monitor_; }
+  /// One step; checks tau > 0 and finite data, then the monitor; leaves q1/p1 untouched on failure.
   virtual step_status step(const state_vector<T>& q, const state_vector<T>& p, const T& tau, state_vector<T>& q1,
                            state_vector<T>& p1, const newton_options<T>& opt = {}) const = 0;
   /// The energy at (q, p) (NaN where the Legendre transform cannot be inverted).
   virtual T energy(const state_vector<T>& q, const state_vector<T>& p) const = 0;
   /// p = dL/dqdot(q, qdot).
   virtual state_vector<T> momentum(const state_vector<T>& q, const state_vector<T>& qdot) const = 0;
+
+ protected:
+  step_monitor<T> monitor_;
 };
 
 /// Defined for T = double, cpp_bin_float_50, cpp_bin_float_100 (one TU each per system); throws

@@ -39,6 +39,7 @@ class engine_stepper final : public stepper<T> {
     V q1f = V::Zero(), p1f = V::Zero();
     st = engine_.one_step(qf, pf, tau, q1f, p1f, opt);
     if (st && (!all_finite(q1f) || !all_finite(p1f))) st.reason = step_failure::non_finite_iterate;
+    if (st && this->monitor_.enabled) this->monitor_.check(energy(q, p), energy(q1f, p1f), st);
     if (st) {
       q1 = q1f;
       p1 = p1f;

@@ -1,11 +1,9 @@
 /// geomint-run: integrate a built-in system with an LPF or classical variational integrator.
-#include <cstdlib>
 #include <iostream>
-#include <map>
-#include <set>
-#include <sstream>
+#include <stdexcept>
 #include <string>
 
+#include "cli.hpp"
 #include "run.hpp"
 
 namespace {
@@ -29,92 +27,64 @@ const char* usage =
     "q0=(sin,0,-cos)(pi/4), p0=(0,0.8,0)) with --scheme lpf. Their CSV adds a constraint column,\n"
     "max |f_l(q)|; initial data off the constraint or with a normal velocity are rejected.\n";
 
-int fail(const std::string& why) {
-  std::cerr << "geomint-run: " << why << "\n" << usage;
-  return 2;
-}
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(item);
-  return out;
-}
-
-bool parse_long(const std::string& s, long& out) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  out = std::strtol(s.c_str(), &end, 10);
-  return end && *end == '\0';
+/// Runs the chosen system and scheme in the chosen scalar; returns the exit status.
+int dispatch(const geomint::run::options& o) {
+  using namespace geomint::run;
+#define GEOMINT_RUN_DISPATCH(sys)                 \
+  if (o.system == #sys) {                         \
+    if (o.digits == 16) return run_##sys##_16(o); \
+    if (o.digits == 50) return run_##sys##_50(o); \
+    return run_##sys##_100(o);                    \
+  }
+  if (o.system == "harmonic" || o.system == "pendulum" || o.system == "kepler" || o.system == "charged") {
+    if (o.digits == 16) return run_free_16(o);
+    if (o.digits == 50) return run_free_50(o);
+    return run_free_100(o);
+  }
+  GEOMINT_RUN_DISPATCH(circle)
+  GEOMINT_RUN_DISPATCH(spherical)
+#undef GEOMINT_RUN_DISPATCH
+  throw std::invalid_argument("unknown system");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  namespace cli = geomint::cli;
   using geomint::run::options;
+  constexpr long max_count = 1'000'000'000'000L;  // the stated bound of --steps and --every
   options o;
-  const std::map<std::string, std::set<std::string>> choices = {
-      {"--system", {"harmonic", "pendulum", "kepler", "charged", "circle", "spherical"}},
-      {"--scheme", {"lpf", "midpoint", "trapezoidal", "galerkin", "paper23"}},
-      {"--nodes", {"equispaced", "lobatto", "chebyshev", "gauss-interior"}},
-      {"--basis", {"lagrange", "bernstein"}},
-      {"--digits", {"16", "50", "100"}}};
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    if (flag == "--help" || flag == "-h") {
-      std::cout << usage;
-      return 0;
-    }
-    if (flag == "--csv") {
-      o.csv = true;
-      continue;
-    }
-    if (i + 1 >= argc) return fail("missing value after " + flag);
-    const std::string value = argv[++i];
-    if (auto c = choices.find(flag); c != choices.end()) {
-      if (!c->second.count(value)) return fail("invalid value '" + value + "' for " + flag);
-      if (flag == "--system") o.system = value;
-      else if (flag == "--scheme") o.scheme = value;
-      else if (flag == "--nodes") o.nodes = value;
-      else if (flag == "--basis") o.basis = value;
-      else o.digits = std::stoi(value);
-    } else if (flag == "--m") {
-      long m = 0;
-      if (!parse_long(value, m) || m < 2 || m > 8) return fail("--m must be an integer in 2..8");
-      o.m = static_cast<int>(m);
-    } else if (flag == "--steps") {
-      if (!parse_long(value, o.steps) || o.steps < 0) return fail("--steps must be a non-negative integer");
-    } else if (flag == "--every") {
-      if (!parse_long(value, o.every) || o.every < 1) return fail("--every must be a positive integer");
-    } else if (flag == "--tau") {
-      o.tau = value;
-    } else if (flag == "--q0") {
-      o.q0 = split(value);
-    } else if (flag == "--p0") {
-      o.p0 = split(value);
-    } else {
-      return fail("unknown flag " + flag);
-    }
-  }
+  cli::parser cl("geomint-run", usage);
+  cl.value("--system", [&](const std::string& v) {
+      o.system = cli::parse_choice("--system", v, {"harmonic", "pendulum", "kepler", "charged", "circle", "spherical"});
+    })
+      .value("--scheme", [&](const std::string& v) {
+        o.scheme = cli::parse_choice("--scheme", v, {"lpf", "midpoint", "trapezoidal", "galerkin", "paper23"});
+      })
+      .value("--nodes", [&](const std::string& v) {
+        o.nodes = cli::parse_choice("--nodes", v, {"equispaced", "lobatto", "chebyshev", "gauss-interior"});
+      })
+      .value("--basis", [&](const std::string& v) { o.basis = cli::parse_choice("--basis", v, {"lagrange", "bernstein"}); })
+      .value("--digits", [&](const std::string& v) { o.digits = std::stoi(cli::parse_choice("--digits", v, {"16", "50", "100"})); })
+      .value("--m", [&](const std::string& v) { o.m = cli::parse_integer<int>("--m", v, 2, 8); })
+      .value("--steps", [&](const std::string& v) { o.steps = cli::parse_integer<long>("--steps", v, 0, max_count); })
+      .value("--every", [&](const std::string& v) { o.every = cli::parse_integer<long>("--every", v, 1, max_count); })
+      .value("--tau", [&](const std::string& v) { o.tau = cli::checked_real_text("--tau", v, cli::real_bound::positive); })
+      .value("--q0", [&](const std::string& v) { o.q0 = cli::parse_real_list("--q0", v, cli::real_bound::finite); })
+      .value("--p0", [&](const std::string& v) { o.p0 = cli::parse_real_list("--p0", v, cli::real_bound::finite); })
+      .toggle("--csv", [&] { o.csv = true; })
+      .toggle("--no-monitor", [&] { o.monitor = false; });
+  if (const auto done = cl.parse(argc, argv)) return *done;
   try {
-    using namespace geomint::run;
-#define GEOMINT_RUN_DISPATCH(sys)                            \
-  if (o.system == #sys) {                                    \
-    if (o.digits == 16) return run_##sys##_16(o);            \
-    if (o.digits == 50) return run_##sys##_50(o);            \
-    return run_##sys##_100(o);                               \
-  }
-    if (o.system == "harmonic" || o.system == "pendulum" || o.system == "kepler" || o.system == "charged") {
-      if (o.digits == 16) return run_free_16(o);
-      if (o.digits == 50) return run_free_50(o);
-      return run_free_100(o);
-    }
-    GEOMINT_RUN_DISPATCH(circle)
-    GEOMINT_RUN_DISPATCH(spherical)
-#undef GEOMINT_RUN_DISPATCH
+    return geomint::cli::finish_stdout("geomint-run", dispatch(o));
   } catch (const std::invalid_argument& e) {
-    return fail(e.what());
+    // Combinations the parser cannot see alone (--q0 with the wrong count for the system,
+    // paper23 off the circle, initial data off the constraint).
+    std::cout.flush();
+    return cl.fail(e.what());
+  } catch (const std::exception& e) {
+    std::cout.flush();
+    std::cerr << "geomint-run: " << e.what() << '\n';
+    return 1;
   }
-  return fail("unknown system");
 }

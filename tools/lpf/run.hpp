@@ -18,6 +18,7 @@ struct options {
   std::vector<std::string> q0, p0;  ///< empty: the system's default initial data
   int digits = 16;
   bool csv = false;
+  bool monitor = true;  ///< the step monitor (geomint/solvers/step_monitor.hpp); --no-monitor turns it off
 };
 
 #define GEOMINT_RUN_DECLARE(sys, digits) int run_##sys##_##digits(const options&);

@@ -62,7 +62,7 @@ void constrained_summary(const options& o, const std::string& system, const std:
                          const T& energy_error, const T& worst_constraint) {
   if (o.csv) return;
   std::cout << "system " << system << ", scheme " << label << ", tau " << tau << ", steps " << o.steps << ", digits "
-            << std::numeric_limits<T>::digits10 << "\nmax |energy - energy0| = " << energy_error
+            << o.digits << "\nmax |energy - energy0| = " << energy_error
             << "\nmax constraint violation = " << worst_constraint << "\n";
 }
 
@@ -72,7 +72,8 @@ int run_constrained_fb(const options& o) {
   constexpr int n = Sys::dof;
   const T tau = parse_scalar<T>(o.tau);
   using scheme = constrained_lpf<M, Family, Basis>;
-  const constrained_integrator<scheme, Sys, Con, T> integrator(Sys{}, Con{}, tau);
+  constrained_integrator<scheme, Sys, Con, T> integrator(Sys{}, Con{}, tau);
+  integrator.set_monitor(run_monitor<T>(o));
   const auto [q0, p0] = constrained_initial_data<Sys, T>(o);
   // M = identity for both systems, so the momentum p0 is the initial velocity.
   auto s = integrator.initial_state(q0, p0);
@@ -83,16 +84,15 @@ int run_constrained_fb(const options& o) {
   if (o.csv) constrained_row<T, n>(s.step, s.t, s.q, s.p, energy0, integrator.violation(s));
   for (long k = 0; k < o.steps; ++k) {
     const step_status st = integrator.try_step(s);
-    if (!st) {
-      std::cout.flush();
-      std::cerr << "geomint-run: " << st.message() << '\n';
-      return 3;
-    }
+    if (!st) return report_failure(st);
     using std::abs;
     const T energy = integrator.energy(s), violation = integrator.violation(s);
     if (abs(T(energy - energy0)) > worst_energy) worst_energy = abs(T(energy - energy0));
     if (violation > worst_constraint) worst_constraint = violation;
-    if (o.csv && (s.step % o.every == 0 || k + 1 == o.steps)) constrained_row<T, n>(s.step, s.t, s.q, s.p, energy, violation);
+    if (o.csv && (s.step % o.every == 0 || k + 1 == o.steps)) {
+      constrained_row<T, n>(s.step, s.t, s.q, s.p, energy, violation);
+      if (!cli::stdout_ok()) return cli::exit_output;  // reported by main (finish_stdout)
+    }
   }
   constrained_summary<T>(o, std::string(Sys::name), scheme::name(), tau, worst_energy, worst_constraint);
   return 0;
@@ -121,7 +121,9 @@ int run_paper23(const options& o) {
   using Sys = systems::free_particle_2d;
   using Con = systems::unit_circle;
   const T tau = parse_scalar<T>(o.tau);
-  const constrained_integrator<constrained_lpf<2>, Sys, Con, T> starter(Sys{}, Con{}, tau);
+  constrained_integrator<constrained_lpf<2>, Sys, Con, T> starter(Sys{}, Con{}, tau);
+  const step_monitor<T> monitor = run_monitor<T>(o);
+  starter.set_monitor(monitor);
   const auto [q0, p0] = constrained_initial_data<Sys, T>(o);
   auto s = starter.initial_state(q0, p0);
   std::cout << std::setprecision(std::numeric_limits<T>::max_digits10);
@@ -131,21 +133,17 @@ int run_paper23(const options& o) {
   vec<T, 2> prev = s.q;
   T worst_energy(0), worst_constraint(0);
   if (o.steps >= 1) {
-    if (const step_status st = starter.try_step(s); !st) {
-      std::cerr << "geomint-run: " << st.message() << '\n';
-      return 3;
-    }
+    if (const step_status st = starter.try_step(s); !st) return report_failure(st);
   }
   vec<T, 2> curr = s.q;
+  T previous_energy = energy0;
   for (long k = 1; k <= o.steps; ++k) {
     if (k >= 2) {
       vec<T, 2> next;
       try {
         next = paper23_step<T>(prev, curr, k - 1);
       } catch (const integration_error& e) {
-        std::cout.flush();
-        std::cerr << "geomint-run: " << e.what() << '\n';
-        return 3;
+        return report_failure(e.status());
       }
       prev = curr;
       curr = next;
@@ -154,9 +152,17 @@ int run_paper23(const options& o) {
     const vec<T, 2> p = k == 1 ? s.p : vec<T, 2>((prev - T(4) * eta + T(3) * curr) / tau);
     using std::abs;
     const T energy = p.squaredNorm() / T(2), violation = abs(T(curr.squaredNorm() - T(1)));
+    step_status checked;
+    checked.step = k - 1;
+    monitor.check(previous_energy, energy, checked);
+    if (!checked) return report_failure(checked);
+    previous_energy = energy;
     if (abs(T(energy - energy0)) > worst_energy) worst_energy = abs(T(energy - energy0));
     if (violation > worst_constraint) worst_constraint = violation;
-    if (o.csv && (k % o.every == 0 || k == o.steps)) constrained_row<T, 2>(k, T(k) * tau, curr, p, energy, violation);
+    if (o.csv && (k % o.every == 0 || k == o.steps)) {
+      constrained_row<T, 2>(k, T(k) * tau, curr, p, energy, violation);
+      if (!cli::stdout_ok()) return cli::exit_output;  // reported by main (finish_stdout)
+    }
   }
   constrained_summary<T>(o, "circle", "paper (23) as printed", tau, worst_energy, worst_constraint);
   return 0;

@@ -13,18 +13,18 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include "cli.hpp"
 #include "run.hpp"
 #include "stepper.hpp"
 
 namespace geomint::run {
 
+/// A number the command-line parser has already checked (plain decimal, finite, within the
+/// range of double), read in the scalar T at full precision.
 template <class T>
 T parse_scalar(const std::string& s) {
-  std::size_t used = 0;
   if constexpr (std::is_floating_point_v<T>) {
-    const double v = std::stod(s, &used);
-    if (used != s.size()) throw std::invalid_argument("not a number: " + s);
-    return T(v);
+    return T(std::strtod(s.c_str(), nullptr));
   } else {
     std::istringstream in(s);
     T v;
@@ -32,6 +32,20 @@ T parse_scalar(const std::string& s) {
     if (in.fail() || !in.eof()) throw std::invalid_argument("not a number: " + s);
     return v;
   }
+}
+
+/// The monitor of the run: on unless --no-monitor.
+template <class T>
+step_monitor<T> run_monitor(const options& o) {
+  return o.monitor ? step_monitor<T>::on() : step_monitor<T>{};
+}
+
+/// Reports a failed step on stderr (after what was written to stdout).
+inline int report_failure(const step_status& st) {
+  std::cout.flush();
+  std::cerr << "geomint-run: " << st.message() << '\n';
+  if (st.reason == step_failure::left_regime) std::cerr << "geomint-run: (--no-monitor disables this check)\n";
+  return geomint::cli::exit_run_failure;
 }
 
 /// The system's default initial data (tools/common/stepper.hpp), overridden by --q0 / --p0.
@@ -61,6 +75,7 @@ int run_free(const options& o) {
   spec.basis = o.basis;
   spec.m = o.m;
   const auto stepper = tools::make_stepper<T>(o.system, spec);
+  stepper->set_monitor(run_monitor<T>(o));
   const int n = stepper->dof();
   const T tau = parse_scalar<T>(o.tau);
   // Not a structured binding: the lambdas below capture q and p (Clang 14 cannot).
@@ -93,19 +108,18 @@ int run_free(const options& o) {
   for (long k = 0; k < o.steps; ++k) {
     step_status st = stepper->step(q, p, tau, q1, p1, opt);
     st.step = step;
-    if (!st) {
-      std::cout.flush();
-      std::cerr << "geomint-run: " << st.message() << '\n';
-      return 3;
-    }
+    if (!st) return report_failure(st);
     q = q1;
     p = p1;
-    t += tau;
     ++step;
+    t = T(step) * tau;  // t_k = k tau, not accumulated
     using std::abs;
     const T dE = abs(stepper->energy(q, p) - E0);
     if (dE > max_dE) max_dE = dE;
-    if (o.csv && (step % o.every == 0 || k + 1 == o.steps)) row();
+    if (o.csv && (step % o.every == 0 || k + 1 == o.steps)) {
+      row();
+      if (!cli::stdout_ok()) return cli::exit_output;  // reported by main (finish_stdout)
+    }
   }
   timespec cpu_end{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu_end);
@@ -113,7 +127,7 @@ int run_free(const options& o) {
             << double(cpu_end.tv_sec - cpu_start.tv_sec) + double(cpu_end.tv_nsec - cpu_start.tv_nsec) * 1e-9 << '\n';
   if (!o.csv) {
     std::cout << "system " << o.system << ", scheme " << stepper->name() << ", tau " << tau << ", steps " << o.steps
-              << ", digits " << std::numeric_limits<T>::digits10 << "\n";
+              << ", digits " << o.digits << "\n";
     std::cout << "t = " << t << "\nq =";
     for (int i = 0; i < n; ++i) std::cout << ' ' << q[i];
     std::cout << "\np =";

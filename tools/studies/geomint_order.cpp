@@ -1,6 +1,7 @@
 /// geomint-order: observed local and global orders and error constants of the schemes on the
 /// nonlinear systems, in multiprecision arithmetic against an independent Taylor-series flow.
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -21,7 +22,7 @@ using boost::multiprecision::backends::cpp_bin_float;
 const char* usage =
     "usage: geomint-order [--system S[,S...]|all] [--scheme S[,S...]|all] [--nodes F[,F...]|all]\n"
     "                     [--m M|A..B (2..8)] [--digits 50|100] [--steps N1,N2,... ] [--t-end T]\n"
-    "                     [--threads K] [--csv]\n"
+    "                     [--threads K (1..64)] [--csv] [--no-monitor]\n"
     "Local error (one step) and global error (at t = T) of each scheme against the exact flow, for\n"
     "tau = T/N over the ladder N1 < N2 < ... (default T = 1, N = 8,16,32,64), in --digits digit\n"
     "arithmetic; the reference flow is an adaptive Taylor series method with closed-form\n"
@@ -31,8 +32,13 @@ const char* usage =
     "  systems: harmonic, pendulum, kepler, charged (all); initial data as geomint-run\n"
     "  schemes: lpf, midpoint, trapezoidal, galerkin (all)\n"
     "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n"
-    "CSV header: system,scheme,nodes,m,local_order,global_order,error_constant\n"
-    "(m and nodes are '-' where a scheme has none).\n";
+    "--steps: 2 to 16 increasing counts in 1..10^9.\n"
+    "CSV header: system,scheme,nodes,m,local_order,global_order,error_constant,regime\n"
+    "(m and nodes are '-' where a scheme has none). regime is 'ok' when the observed orders look\n"
+    "asymptotic (global order within 1/4 of an integer >= 1, local order >= 1.75),\n"
+    "'failed', or 'outside: <reason>': such a row is no measurement, and any row not 'ok' makes\n"
+    "the exit status 3. The step monitor (relative energy change per step <= 1/10) is on; a step\n"
+    "that leaves the scheme's regime fails the case; --no-monitor turns it off.\n";
 
 template <class T>
 std::string fixed2(const T& v) {
@@ -45,6 +51,21 @@ std::string sci3(const T& v) {
   std::ostringstream out;
   out << std::scientific << std::setprecision(2) << static_cast<double>(v);
   return out.str();
+}
+
+/// "ok" when the observed orders look asymptotic: the global order p within 1/4 of an integer
+/// >= 1 and the local order at least 2 - 1/4 (a consistent one-step map has local error
+/// O(tau^2) or smaller). Otherwise the reason: such numbers come from
+/// steps outside the asymptotic regime (errors of order one, pre-asymptotic ladders) and are no
+/// measurement of the order.
+template <class T>
+std::string asymptotic_regime(const analysis::order_result<T>& r) {
+  const double p = static_cast<double>(r.global_order), local = static_cast<double>(r.local_order);
+  if (!std::isfinite(p) || !std::isfinite(local)) return "outside: non-finite observed order";
+  if (p < 0.75) return "outside: global order below 1";
+  if (std::fabs(p - std::round(p)) > 0.25) return "outside: non-integer global order";
+  if (local < 1.75) return "outside: local order below 2";
+  return "ok";
 }
 
 /// The reference states at t_end / N (and t_end), computed once per system in the scalar R.
@@ -78,7 +99,7 @@ std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T
 }
 
 template <class T, class R>
-int run(const geomint::studies::selection& sel, const T& t_end, const std::vector<long>& counts) {
+int run(const geomint::studies::selection& sel, const T& t_end, const std::vector<long>& counts, bool monitor) {
   const auto cases = sel.cases();
   // Reference states per system (key 0: t_end; key N: t_end / N).
   std::map<std::string, std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T>>>> refs;
@@ -95,6 +116,7 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
     const auto& c = cases[i];
     try {
       const auto stepper = tools::make_stepper<T>(c.system, c.spec);
+      if (monitor) stepper->set_monitor(step_monitor<T>::on());
       names[i] = stepper->name();
       const auto& ref = refs.at(c.system);
       auto [q0, qdot0] = tools::default_initial_data<T>(c.system);
@@ -124,7 +146,7 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int status = 0;
-  if (sel.csv) std::cout << "system,scheme,nodes,m,local_order,global_order,error_constant\n";
+  if (sel.csv) std::cout << "system,scheme,nodes,m,local_order,global_order,error_constant,regime\n";
   else
     std::cout << std::left << std::setw(10) << "system" << std::setw(13) << "scheme" << std::setw(16) << "nodes"
               << std::setw(4) << "m" << std::right << std::setw(8) << "local" << std::setw(8) << "global"
@@ -134,18 +156,26 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
     const auto& r = results[i];
     if (!r.ok) {
       std::cerr << "geomint-order: " << c.system << ", " << names[i] << ": " << r.failure << '\n';
-      status = 3;
+      status = geomint::cli::exit_run_failure;
+    }
+    const std::string regime = r.ok ? asymptotic_regime(r) : "failed";
+    if (r.ok && regime != "ok") {
+      std::cerr << "geomint-order: " << c.system << ", " << names[i] << ": result " << regime
+                << " (not a finding; use smaller steps: larger --steps or a smaller --t-end)\n";
+      status = geomint::cli::exit_run_failure;
     }
     const std::string lo = r.ok ? fixed2(r.local_order) : "nan", go = r.ok ? fixed2(r.global_order) : "nan",
                       ec = r.ok ? sci3(r.error_constant) : "nan";
     if (sel.csv) {
       std::cout << c.system << ',' << c.spec.scheme << ',' << c.spec.nodes_label() << ','
-                << geomint::studies::m_label(c.spec) << ',' << lo << ',' << go << ',' << ec << '\n';
+                << geomint::studies::m_label(c.spec) << ',' << lo << ',' << go << ',' << ec << ',' << regime << '\n';
     } else {
       std::cout << std::left << std::setw(10) << c.system << std::setw(13) << c.spec.scheme << std::setw(16)
                 << c.spec.nodes_label() << std::setw(4) << geomint::studies::m_label(c.spec) << std::right
                 << std::setw(8) << lo << std::setw(8) << go << std::setw(12) << ec << "  ";
       for (const T& e : r.global_errors) std::cout << ' ' << sci3(e);
+      if (!r.ok) std::cout << "  FAILED";
+      else if (regime != "ok") std::cout << "  OUTSIDE THE ASYMPTOTIC REGIME (" << regime << ")";
       std::cout << '\n';
     }
   }
@@ -159,40 +189,37 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
 }  // namespace
 
 int main(int argc, char** argv) {
+  namespace cli = geomint::cli;
   geomint::studies::selection sel;
   std::vector<long> counts = {8, 16, 32, 64};
   std::string t_end_text = "1";
+  bool monitor = true;
+  cli::parser cl("geomint-order", usage);
+  sel.register_flags(cl, {"50", "100"});
+  cl.value("--t-end", [&](const std::string& v) { t_end_text = cli::checked_real_text("--t-end", v, cli::real_bound::positive); })
+      .value("--steps", [&](const std::string& v) {
+        counts = cli::parse_integer_list<long>("--steps", v, 1, 1'000'000'000L, 2, 16);
+        for (std::size_t k = 1; k < counts.size(); ++k)
+          if (counts[k] <= counts[k - 1]) throw cli::usage_error("--steps must be positive and increasing");
+      })
+      .toggle("--no-monitor", [&] { monitor = false; });
+  if (const auto done = cl.parse(argc, argv)) return *done;
   try {
-    const bool go = geomint::studies::parse_command_line(
-        argc, argv, usage, sel, {"50", "100"}, {"--steps", "--t-end"}, [&](const std::string& flag, const std::string& value) {
-          if (flag == "--t-end") {
-            t_end_text = value;
-            return;
-          }
-          counts.clear();
-          for (const std::string& s : geomint::studies::split_list(value))
-            counts.push_back(geomint::studies::parse_integer(flag, s));
-          if (counts.size() < 2) throw geomint::studies::usage_error("--steps needs at least two step counts");
-          for (std::size_t k = 0; k < counts.size(); ++k)
-            if (counts[k] < 1 || (k > 0 && counts[k] <= counts[k - 1]))
-              throw geomint::studies::usage_error("--steps must be positive and increasing");
-        });
-    if (!go) return 0;
     auto parse_time = [&](auto zero) {
       using T = decltype(zero);
-      std::istringstream in(t_end_text);
+      std::istringstream in(t_end_text);  // checked by the parser: decimal, finite, > 0
       T t;
       in >> t;
-      if (in.fail() || !in.eof() || !(t > T(0)) || !geomint::detail::is_finite(t))
-        throw geomint::studies::usage_error("--t-end must be a finite number > 0");
       return t;
     };
-    if (sel.digits == 50) return run<cpp_bin_float_50, cpp_bin_float_100>(sel, parse_time(cpp_bin_float_50()), counts);
-    using float150 = number<cpp_bin_float<150>>;
-    return run<cpp_bin_float_100, float150>(sel, parse_time(cpp_bin_float_100()), counts);
-  } catch (const geomint::studies::usage_error& e) {
-    std::cerr << "geomint-order: " << e.what() << '\n' << usage;
-    return 2;
+    int status = 0;
+    if (sel.digits == 50) {
+      status = run<cpp_bin_float_50, cpp_bin_float_100>(sel, parse_time(cpp_bin_float_50()), counts, monitor);
+    } else {
+      using float150 = number<cpp_bin_float<150>>;
+      status = run<cpp_bin_float_100, float150>(sel, parse_time(cpp_bin_float_100()), counts, monitor);
+    }
+    return cli::finish_stdout("geomint-order", status);
   } catch (const std::exception& e) {
     std::cerr << "geomint-order: " << e.what() << '\n';
     return 1;

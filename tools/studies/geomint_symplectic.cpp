@@ -17,7 +17,8 @@ using boost::multiprecision::cpp_bin_float_50;
 const char* usage =
     "usage: geomint-symplectic [--system S[,S...]|all] [--scheme S[,S...]|all] [--nodes F[,F...]|all]\n"
     "                          [--m M|A..B (2..8)] [--digits 16|50|100] [--tau T] [--q0 a[,b]] [--p0 a[,b]]\n"
-    "                          [--long-steps N] [--long-tau T] [--threads K] [--csv]\n"
+    "                          [--long-steps N (0..10^12)] [--long-tau T] [--threads K (1..64)] [--csv]\n"
+    "                          [--no-monitor]\n"
     "The Jacobian J of the one-step map (q, p) -> (q1, p1) at (q0, p0) with step tau, by central\n"
     "differences with Richardson extrapolation (step eps^(1/5)) in --digits digit arithmetic\n"
     "(default 50, tau 0.25), and the defect max |(J^T Omega J - Omega)_ij|: zero up to about\n"
@@ -27,21 +28,26 @@ const char* usage =
     "  schemes: lpf, midpoint, trapezoidal, galerkin (all)\n"
     "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n"
     "CSV header: system,scheme,nodes,m,tau,defect  (plus max_energy_error,energy_drift with\n"
-    "--long-steps).\n";
+    "--long-steps), regime. regime is 'ok', 'failed', or 'outside: ...' for a result that is no\n"
+    "measurement (a defect above 1: tau far outside the scheme's regime); any case not 'ok' makes\n"
+    "the exit status 3. The step monitor (relative energy change per step <= 1/10) is on; it makes\n"
+    "a step that leaves the scheme's regime fail; --no-monitor turns it off.\n";
 
 struct extra_options {
   std::string tau = "0.25", long_tau;
   std::vector<std::string> q0, p0;
   long long_steps = 0;
+  bool monitor = true;
 };
 
+/// A number already checked by the parser (cli.hpp), read in the scalar T at full precision.
 template <class T>
 T parse_number(const std::string& flag, const std::string& s) {
   std::istringstream in(s);
   T v;
   in >> v;
   if (in.fail() || !in.eof() || !geomint::detail::is_finite(v))
-    throw geomint::studies::usage_error(flag + " expects a finite number, got '" + s + "'");
+    throw geomint::cli::usage_error(flag + " expects a finite number, got '" + s + "'");
   return v;
 }
 
@@ -54,7 +60,7 @@ analysis::phase_vector<T> initial_state(const std::string& system, const tools::
   auto read = [&](const std::vector<std::string>& in, tools::state_vector<T>& out, const char* flag) {
     if (in.empty()) return;
     if (static_cast<int>(in.size()) != n)
-      throw geomint::studies::usage_error(std::string(flag) + " needs " + std::to_string(n) + " value(s) for " + system);
+      throw geomint::cli::usage_error(std::string(flag) + " needs " + std::to_string(n) + " value(s) for " + system);
     for (int i = 0; i < n; ++i) out[i] = parse_number<T>(flag, in[static_cast<std::size_t>(i)]);
   };
   read(x.q0, q, "--q0");
@@ -79,7 +85,7 @@ analysis::phase_map<T> as_map(const tools::stepper<T>& stepper, const T& tau) {
 }
 
 struct row {
-  std::string defect = "nan", max_energy = "nan", drift = "nan", failure;
+  std::string defect = "nan", max_energy = "nan", drift = "nan", failure, regime = "ok";
 };
 
 template <class T>
@@ -92,17 +98,15 @@ std::string sci(const T& v) {
 template <class T>
 int run(const geomint::studies::selection& sel, const extra_options& x) {
   const auto cases = sel.cases();
-  const T tau = parse_number<T>("--tau", x.tau);
-  if (!(tau > T(0))) throw geomint::studies::usage_error("--tau must be > 0");
+  const T tau = parse_number<T>("--tau", x.tau);  // checked finite > 0 by the parser
   const double long_tau = x.long_tau.empty() ? static_cast<double>(tau) : parse_number<double>("--long-tau", x.long_tau);
-  if (!(long_tau > 0)) throw geomint::studies::usage_error("--long-tau must be > 0");
   // Check --q0 / --p0 here: the workers below report failures per case, not usage errors.
   if (!x.q0.empty() || !x.p0.empty()) {
     const std::string& system = sel.systems.front();
     const std::size_t n = system == "harmonic" || system == "pendulum" ? 1 : 2;
     for (const auto* v : {&x.q0, &x.p0}) {
       if (!v->empty() && v->size() != n)
-        throw geomint::studies::usage_error("--q0 / --p0 need " + std::to_string(n) + " value(s) for " + system);
+        throw geomint::cli::usage_error("--q0 / --p0 need " + std::to_string(n) + " value(s) for " + system);
       for (const std::string& s : *v) parse_number<T>("--q0/--p0", s);
     }
   }
@@ -112,11 +116,17 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
     const auto& c = cases[i];
     try {
       const auto stepper = tools::make_stepper<T>(c.system, c.spec);
+      if (x.monitor) stepper->set_monitor(step_monitor<T>::on());
       const analysis::phase_vector<T> z0 = initial_state<T>(c.system, *stepper, x);
       const auto J = analysis::one_step_jacobian<T>(as_map<T>(*stepper, tau), z0);
-      rows[i].defect = sci(analysis::symplectic_defect<T>(J));
+      const T defect = analysis::symplectic_defect<T>(J);
+      rows[i].defect = sci(defect);
+      // A defect of order one is no measurement of symplecticity: the map is outside the
+      // regime where the finite-difference Jacobian means anything (tau far too large).
+      if (!(defect <= T(1))) rows[i].regime = "outside: defect above 1";
       if (x.long_steps > 0) {
         const auto fast = tools::make_stepper<double>(c.system, c.spec);
+        if (x.monitor) fast->set_monitor(step_monitor<double>::on());
         const analysis::phase_vector<double> zd = initial_state<double>(c.system, *fast, x);
         const int n = fast->dof();
         const auto e = analysis::energy_behaviour<double>(
@@ -125,7 +135,7 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
               return fast->energy(tools::state_vector<double>(z.head(n)), tools::state_vector<double>(z.tail(n)));
             },
             zd, long_tau, x.long_steps);
-        if (!e.ok) rows[i].failure = "long run failed after " + std::to_string(e.steps) + " steps";
+        if (!e.ok) rows[i].failure = "long run failed after " + std::to_string(e.steps) + " steps (a step failed or left the scheme's regime)";
         rows[i].max_energy = sci(e.max_error);
         rows[i].drift = sci(e.drift);
       }
@@ -137,7 +147,7 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
   int status = 0;
   const bool longrun = x.long_steps > 0;
   if (sel.csv)
-    std::cout << "system,scheme,nodes,m,tau,defect" << (longrun ? ",max_energy_error,energy_drift" : "") << '\n';
+    std::cout << "system,scheme,nodes,m,tau,defect" << (longrun ? ",max_energy_error,energy_drift" : "") << ",regime\n";
   else
     std::cout << std::left << std::setw(10) << "system" << std::setw(13) << "scheme" << std::setw(16) << "nodes"
               << std::setw(4) << "m" << std::right << std::setw(11) << "defect"
@@ -147,17 +157,25 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
     const row& r = rows[i];
     if (!r.failure.empty()) {
       std::cerr << "geomint-symplectic: " << c.system << ", " << c.spec.scheme << ": " << r.failure << '\n';
-      status = 3;
+      status = geomint::cli::exit_run_failure;
+    }
+    if (r.failure.empty() && r.regime != "ok") {
+      std::cerr << "geomint-symplectic: " << c.system << ", " << c.spec.scheme << ": result " << r.regime
+                << " (not a finding; reduce --tau)\n";
+      status = geomint::cli::exit_run_failure;
     }
     if (sel.csv) {
       std::cout << c.system << ',' << c.spec.scheme << ',' << c.spec.nodes_label() << ','
                 << geomint::studies::m_label(c.spec) << ',' << x.tau << ',' << r.defect;
       if (longrun) std::cout << ',' << r.max_energy << ',' << r.drift;
+      std::cout << ',' << (r.failure.empty() ? r.regime : "failed");
     } else {
       std::cout << std::left << std::setw(10) << c.system << std::setw(13) << c.spec.scheme << std::setw(16)
                 << c.spec.nodes_label() << std::setw(4) << geomint::studies::m_label(c.spec) << std::right
                 << std::setw(11) << r.defect;
       if (longrun) std::cout << std::setw(12) << r.max_energy << std::setw(10) << r.drift;
+      if (!r.failure.empty()) std::cout << "  FAILED";
+      else if (r.regime != "ok") std::cout << "  OUTSIDE THE REGIME (" << r.regime << ")";
     }
     std::cout << '\n';
   }
@@ -171,30 +189,28 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  namespace cli = geomint::cli;
   geomint::studies::selection sel;
   extra_options x;
+  cli::parser cl("geomint-symplectic", usage);
+  sel.register_flags(cl, {"16", "50", "100"});
+  cl.value("--tau", [&](const std::string& v) { x.tau = cli::checked_real_text("--tau", v, cli::real_bound::positive); })
+      .value("--long-tau", [&](const std::string& v) { x.long_tau = cli::checked_real_text("--long-tau", v, cli::real_bound::positive); })
+      .value("--q0", [&](const std::string& v) { x.q0 = cli::parse_real_list("--q0", v, cli::real_bound::finite); })
+      .value("--p0", [&](const std::string& v) { x.p0 = cli::parse_real_list("--p0", v, cli::real_bound::finite); })
+      .value("--long-steps", [&](const std::string& v) { x.long_steps = cli::parse_integer<long>("--long-steps", v, 0, 1'000'000'000'000L); })
+      .toggle("--no-monitor", [&] { x.monitor = false; });
+  if (const auto done = cl.parse(argc, argv)) return *done;
   try {
-    const bool go = geomint::studies::parse_command_line(
-        argc, argv, usage, sel, {"16", "50", "100"}, {"--tau", "--long-tau", "--q0", "--p0", "--long-steps"},
-        [&](const std::string& flag, const std::string& value) {
-          if (flag == "--tau") x.tau = value;
-          else if (flag == "--long-tau") x.long_tau = value;
-          else if (flag == "--q0") x.q0 = geomint::studies::split_list(value);
-          else if (flag == "--p0") x.p0 = geomint::studies::split_list(value);
-          else {
-            x.long_steps = geomint::studies::parse_integer(flag, value);
-            if (x.long_steps < 0) throw geomint::studies::usage_error("--long-steps must be >= 0");
-          }
-        });
-    if (!go) return 0;
     if ((!x.q0.empty() || !x.p0.empty()) && sel.systems.size() != 1)
-      throw geomint::studies::usage_error("--q0 / --p0 need a single --system");
-    if (sel.digits == 16) return run<double>(sel, x);
-    if (sel.digits == 50) return run<cpp_bin_float_50>(sel, x);
-    return run<cpp_bin_float_100>(sel, x);
-  } catch (const geomint::studies::usage_error& e) {
-    std::cerr << "geomint-symplectic: " << e.what() << '\n' << usage;
-    return 2;
+      throw cli::usage_error("--q0 / --p0 need a single --system");
+    int status = 0;
+    if (sel.digits == 16) status = run<double>(sel, x);
+    else if (sel.digits == 50) status = run<cpp_bin_float_50>(sel, x);
+    else status = run<cpp_bin_float_100>(sel, x);
+    return cli::finish_stdout("geomint-symplectic", status);
+  } catch (const cli::usage_error& e) {
+    return cl.fail(e.what());
   } catch (const std::exception& e) {
     std::cerr << "geomint-symplectic: " << e.what() << '\n';
     return 1;

@@ -13,7 +13,9 @@ struct staggered_grid {
   int segments;  ///< J: number of interior segments; there are J + 1 nodes
 
   staggered_grid(const T& l, int J) : length(l), segments(J) {
-    if (!(l > T(0))) throw std::invalid_argument("geomint::beam::staggered_grid: the length must be positive");
+    // l - l == 0 holds for finite l only (inf - inf and NaN - NaN are NaN).
+    if (!(l > T(0)) || !(l - l == T(0)))
+      throw std::invalid_argument("geomint::beam::staggered_grid: the length must be finite and positive");
     if (J < 1) throw std::invalid_argument("geomint::beam::staggered_grid: need at least 2 nodes (J >= 1)");
   }
   int nodes() const { return segments + 1; }

@@ -65,6 +65,7 @@ struct options {
   bool structured_solve = true;
   /// A step whose total energy exceeds this factor times the initial energy is rejected as
   /// unstable (the scheme keeps the energy within O(dt) of its initial value when stable).
+  /// Must be finite and > 1 (checked by the integrator's constructor).
   T energy_growth_limit = T(100);
 };
 
@@ -110,6 +111,11 @@ class integrator {
       throw std::invalid_argument("geomint::beam::integrator: the time step dt must be finite and > 0");
     if (opt_.max_newton_iterations < 1)
       throw std::invalid_argument("geomint::beam::integrator: max_newton_iterations must be >= 1");
+    // NaN would make the guard `e > limit * E0` always false, i.e. silently off.
+    if (!(opt_.energy_growth_limit > T(1)) || !(opt_.energy_growth_limit - opt_.energy_growth_limit == T(0)))
+      throw std::invalid_argument("geomint::beam::integrator: energy_growth_limit must be finite and > 1");
+    if (!(grid_.length > T(0)) || !(grid_.length - grid_.length == T(0)))
+      throw std::invalid_argument("geomint::beam::integrator: the grid length must be finite and positive");
     const int J = grid_.segments;
     if (static_cast<int>(mu_.size()) != J + 1)
       throw std::invalid_argument("geomint::beam::integrator: mu0 must have J + 1 = " + std::to_string(J + 1) + " entries");

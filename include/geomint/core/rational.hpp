@@ -8,6 +8,7 @@
 /// is a compile error, never a wrong value.
 
 #include <compare>
+#include <concepts>
 #include <cstdint>
 #include <limits>
 #include <ostream>
@@ -64,11 +65,55 @@ struct rational {
   std::int64_t den = 1;  ///< denominator, always > 0; gcd(num, den) = 1
 
   constexpr rational() = default;
-  /// An integer; implicit so that `rational r = 3;` and mixed arithmetic read naturally.
-  constexpr rational(std::int64_t n) : num(n), den(1) {}  // NOLINT(google-explicit-constructor)
-  /// n/d, reduced; d = 0 throws (a compile error in a constant expression).
-  constexpr rational(std::int64_t n, std::int64_t d) {
-    *this = from_wide(n, d);
+  /// An integer of any integer type; implicit so that `rational r = 3;` and mixed arithmetic
+  /// read naturally. Values outside -(2^63 - 1) .. 2^63 - 1 (INT64_MIN, or an unsigned value
+  /// above INT64_MAX) throw std::overflow_error (a compile error in a constant expression):
+  /// -INT64_MIN is not representable, so the negation and abs of such a value could not be exact.
+  template <std::integral Int>
+    requires(!std::is_same_v<Int, bool>)
+  constexpr rational(Int n) {  // NOLINT(google-explicit-constructor)
+    *this = narrow(static_cast<detail::int128>(n), 1);
+  }
+  /// n/d for integers of any integer types, reduced; d = 0 throws std::domain_error and a
+  /// reduced value outside the 64-bit range throws std::overflow_error (compile errors in a
+  /// constant expression).
+  template <std::integral N, std::integral D>
+    requires(!std::is_same_v<N, bool> && !std::is_same_v<D, bool>)
+  constexpr rational(N n, D d) {
+    *this = from_wide(static_cast<detail::int128>(n), static_cast<detail::int128>(d));
+  }
+  /// No conversion from floating point: `rational r = 0.5;` does not compile (it would have
+  /// converted 0.5 to the integer 0). Write rational(1, 2), or from_double() for the exact
+  /// value of a double.
+  template <std::floating_point F>
+  rational(F) = delete;
+  template <class A, class B>
+    requires(std::floating_point<A> || std::floating_point<B>)
+  rational(A, B) = delete;
+
+  /// The exact value of a finite double (a dyadic rational m 2^e), when it fits in 64 bits;
+  /// std::overflow_error otherwise (e.g. 1e300 or 2^-70), std::domain_error for NaN or infinity.
+  static constexpr rational from_double(double x) {
+    if (!(x - x == 0.0)) throw std::domain_error("geomint::rational::from_double: not a finite number");
+    if (x == 0.0) return rational();
+    // x = mantissa * 2^exponent with an odd-or-zero-trailing integer mantissa (|mantissa| < 2^53).
+    const bool negative = x < 0;
+    double m = negative ? -x : x;
+    int exponent = 0;
+    while (m >= 9007199254740992.0) {  // 2^53: halving is exact in this range
+      m /= 2;
+      ++exponent;
+      if (exponent > 62) throw std::overflow_error("geomint::rational overflow");
+    }
+    while (m != static_cast<double>(static_cast<std::int64_t>(m))) {  // doubling is exact
+      m *= 2;
+      --exponent;
+      if (exponent < -62) throw std::overflow_error("geomint::rational overflow");
+    }
+    detail::int128 n = static_cast<std::int64_t>(m), d = 1;
+    for (; exponent > 0; --exponent) n *= 2;
+    for (; exponent < 0; ++exponent) d *= 2;
+    return from_wide(negative ? -n : n, d);
   }
 
   /// A fraction already in lowest terms with a positive denominator; checks that it fits.

@@ -288,10 +288,18 @@ class constrained_integrator {
   using vector = vec<T, n>;
   using state = phase_state<T, n>;
 
+  /// The Newton options are validated here (std::invalid_argument for max_iterations < 1 etc.).
   constrained_integrator(const Sys& sys, const Con& con, const T& tau, newton_options<T> opt = {})
-      : engine_(sys, con), tau_(tau), opt_(opt) {}
+      : engine_(sys, con), tau_(tau), opt_(opt) {
+    opt_.validate();
+  }
 
   const T& tau() const { return tau_; }
+  /// The optional step monitor (off by default; see step_monitor.hpp). Validated when set.
+  void set_monitor(const step_monitor<T>& m) {
+    m.validate();
+    monitor_ = m;
+  }
 
   /// The state at t = 0 from (q_0, qdot_0). Throws std::invalid_argument when q_0 is off the
   /// constraint, or qdot_0 not tangent to it, by more than `tolerance_ulps` eps (scaled by
@@ -321,6 +329,9 @@ class constrained_integrator {
   /// point to first order), qdot_0 is replaced by its part tangent to the constraint at the new q_0
   /// (the momentum projection used after every step).
   state project_initial_state(vector q0, const vector& qdot0) const {
+    // Non-finite data would otherwise surface as a "singular Jacobian" or a failed projection.
+    if (!detail::all_finite(q0) || !detail::all_finite(qdot0))
+      throw std::invalid_argument("geomint: initial state is not finite (project_initial_state needs finite q0 and qdot0)");
     using F = detail::constraint_derivatives<Con, T, n>;
     const T eps = std::numeric_limits<T>::epsilon();
     for (int it = 0;; ++it) {
@@ -350,6 +361,13 @@ class constrained_integrator {
     if (!detail::all_finite(q1) || !detail::all_finite(p1)) {
       st.reason = step_failure::non_finite_iterate;
       return st;
+    }
+    if (monitor_.enabled) {
+      state next = s;
+      next.q = q1;
+      next.p = p1;
+      monitor_.check(energy(s), energy(next), st);
+      if (!st) return st;
     }
     detail::commit_step(s, q1, p1, tau_);
     return st;
@@ -399,6 +417,7 @@ class constrained_integrator {
   typename Scheme::template engine<Sys, Con, T> engine_;
   T tau_;
   newton_options<T> opt_;
+  step_monitor<T> monitor_;
 };
 
 }  // namespace geomint

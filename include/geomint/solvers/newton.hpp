@@ -21,10 +21,23 @@
 namespace geomint {
 
 /// Newton settings. The tolerance is `tolerance_ulps` units of epsilon relative to the iterate.
+///
+/// Both must be >= 1 (max_iterations at most 100000, tolerance_ulps at most 2^20): validate()
+/// throws std::invalid_argument otherwise, and every solve calls it, so that 0 or -5 iterations
+/// is an error with a reason, never a step that "fails to converge" without trying.
 template <class T>
 struct newton_options {
   int max_iterations = 50;
   int tolerance_ulps = 64;
+
+  void validate() const {
+    if (max_iterations < 1 || max_iterations > 100000)
+      throw std::invalid_argument("newton_options: max_iterations must be in 1..100000, got " +
+                                  std::to_string(max_iterations));
+    if (tolerance_ulps < 1 || tolerance_ulps > (1 << 20))
+      throw std::invalid_argument("newton_options: tolerance_ulps must be in 1..1048576, got " +
+                                  std::to_string(tolerance_ulps));
+  }
 };
 
 namespace detail {
@@ -32,6 +45,7 @@ namespace detail {
 /// Solves F(z) = 0 from z. `residual(z, F, J)` fills F and J = dF/dz.
 template <int N, class T, class Fn>
 step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt) {
+  opt.validate();
   using std::abs;
   const T eps = std::numeric_limits<T>::epsilon();
   const T tol = T(opt.tolerance_ulps) * eps;
@@ -87,6 +101,7 @@ struct jacobian_cache {
 template <int N, class T, class Fn>
 step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt, const T& scale,
                                     jacobian_cache<T, N>* cache = nullptr) {
+  opt.validate();
   using std::cbrt;
   const T eps = std::numeric_limits<T>::epsilon();
   const T tol = T(opt.tolerance_ulps) * eps;

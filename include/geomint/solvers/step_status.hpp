@@ -20,6 +20,7 @@ enum class step_failure {
   non_finite_iterate,  ///< Newton produced NaN or infinity (divergence), or the result is not finite
   no_convergence,      ///< the iteration budget ran out
   energy_growth,       ///< the energy left the bound the options set: the step is outside the scheme's regime
+  left_regime,         ///< the step monitor refused the converged step (see step_monitor.hpp)
 };
 
 inline std::string_view to_string(step_failure f) {
@@ -31,6 +32,8 @@ inline std::string_view to_string(step_failure f) {
     case step_failure::non_finite_iterate: return "Newton iterate became non-finite (divergence)";
     case step_failure::no_convergence: return "Newton did not converge";
     case step_failure::energy_growth: return "the energy grew beyond its limit (step outside the scheme's stable regime)";
+    case step_failure::left_regime:
+      return "step left the scheme's regime (relative energy change per step above the monitor's bound; reduce tau)";
   }
   return "unknown";
 }
@@ -42,9 +45,14 @@ struct step_status {
   long step = 0;        ///< index k of the step k -> k+1 that was attempted
   int iterations = 0;   ///< Newton iterations used
   int node = -1;        ///< the grid node concerned (beam), or -1
+  /// For left_regime: the observed relative energy change and the monitor's bound (as double,
+  /// for the message only).
+  double observed = 0, bound = 0;
   explicit operator bool() const { return reason == step_failure::none; }
   std::string message() const {
     std::string text = "geomint: step " + std::to_string(step) + ": " + std::string(to_string(reason));
+    if (reason == step_failure::left_regime)
+      text += ": |E_{k+1} - E_k| / max(|E_k|, |E_{k+1}|) = " + std::to_string(observed) + " > " + std::to_string(bound);
     if (node >= 0) text += " at node " + std::to_string(node);
     if (iterations > 0) text += " (after " + std::to_string(iterations) + " Newton iterations)";
     return text;

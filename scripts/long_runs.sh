@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Long runs (not a test): N steps (default 10^7) of each integrator family through the tools,
+# reporting the energy error at the end, the maximum energy error over the run, the time per
+# step and the peak resident memory (max RSS). Constant memory is checked by running each case
+# twice, with N/100 and N steps: the two peaks must agree (no growth with the number of steps).
+#
+#   scripts/long_runs.sh [build-dir] [steps]      (default build/gcc, 10000000)
+#
+# Families: the free LPF integrator, the classical variational integrators (midpoint,
+# Galerkin), the constrained LPF integrator (circle), and the beam (per node-step: N / 100
+# steps of the 101-node beam, i.e. about N node-steps).
+set -euo pipefail
+build=${1:-build/gcc}
+steps=${2:-10000000}
+run=$build/tools/lpf/geomint-run
+beam=$build/tools/beam/geomint-beam
+for tool in "$run" "$beam"; do
+  [[ -x $tool ]] || { echo "long_runs.sh: $tool not built (cmake --build $build --target geomint-run geomint-beam)" >&2; exit 1; }
+done
+
+# measure <label> <steps> <command...>: prints label, steps, seconds, ns/step, max RSS (kB)
+# and the last lines of the tool's summary.
+measure() {
+  local label=$1 n=$2
+  shift 2
+  local out
+  out=$( { /usr/bin/time -f 'TIME %e %M' "$@" > /tmp/long_runs_out.$$ ; } 2>&1 )
+  local seconds rss
+  seconds=$(grep '^TIME' <<<"$out" | awk '{print $2}')
+  rss=$(grep '^TIME' <<<"$out" | awk '{print $3}')
+  local ns
+  ns=$(awk -v s="$seconds" -v n="$n" 'BEGIN { printf "%.1f", 1e9 * s / n }')
+  local energy
+  energy=$(grep -E 'max \|energy - energy0\||energy:' /tmp/long_runs_out.$$ | tr '\n' ' ' | sed 's/|/!/g')
+  printf '| %s | %s | %s | %s | %s | %s |\n' "$label" "$n" "$seconds" "$ns" "$rss" "$energy"
+  rm -f /tmp/long_runs_out.$$
+}
+
+echo "| case | steps | seconds | ns/step | max RSS (kB) | energy |"
+echo "|---|---|---|---|---|---|"
+small=$((steps / 100))
+for n in "$small" "$steps"; do
+  measure "LPF m=4 gauss-interior, pendulum, tau=0.1" "$n" "$run" --system pendulum --m 4 --nodes gauss-interior --tau 0.1 --steps "$n"
+  measure "LPF m=2 equispaced, Kepler e=0.5, tau=0.01" "$n" "$run" --system kepler --m 2 --tau 0.01 --steps "$n"
+  measure "midpoint VI, pendulum, tau=0.1" "$n" "$run" --system pendulum --scheme midpoint --tau 0.1 --steps "$n"
+  measure "Galerkin m=3, Kepler e=0.5, tau=0.01" "$n" "$run" --system kepler --scheme galerkin --m 3 --tau 0.01 --steps "$n"
+  measure "constrained LPF m=2, circle, tau=0.1" "$n" "$run" --system circle --m 2 --tau 0.1 --steps "$n"
+done
+# The beam: 101 nodes, dt = 1e-4 (the paper's case); steps/100 steps = about `steps` node-steps.
+for n in $((small / 100)) "$small"; do
+  measure "beam (Poisson, 101 nodes, dt=1e-4), per beam step" "$n" "$beam" --steps "$n" --dt 0.0001
+done

@@ -1,0 +1,122 @@
+# The bad-argument corpus: every tool, fed command lines that are wrong in one flag, must exit
+# with status 2 (never crash, hang or take a signal) and print a message naming the flag, then
+# its usage text. Included from tests/cli/CMakeLists.txt. The expected status and message are
+# the tools' common convention (tools/common/cli.hpp), not output of the tools.
+#
+# geomint_cli_corpus(<tool target> <message regex> <args...>): one ctest entry per case.
+set(_geomint_corpus_index 0)
+function(geomint_cli_corpus tool flag_regex)
+  math(EXPR _i "${_geomint_corpus_index} + 1")
+  set(_geomint_corpus_index ${_i} PARENT_SCOPE)
+  string(REPLACE "-" "_" _name "${tool}")
+  geomint_cli_test(geomint_cli_corpus_${_name}_${_i} 2 "${flag_regex}.*usage: ${tool}" $<TARGET_FILE:${tool}> ${ARGN})
+  set_tests_properties(geomint_cli_corpus_${_name}_${_i} PROPERTIES TIMEOUT 30 LABELS cli_corpus)
+endfunction()
+
+# geomint_cli_corpus_empty(<tool target> <flag>): `<tool> <flag> ''`, an empty value as a separate
+# argument (CMake drops empty list items, so the command goes through sh).
+function(geomint_cli_corpus_empty tool flag)
+  string(REPLACE "-" "_" _name "${tool}${flag}")
+  add_test(NAME geomint_cli_corpus_${_name}_empty
+           COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_REGEX=${flag} needs a non-empty value.*usage: ${tool}"
+                   "-DCOMMAND=/bin/sh;-c;exec \"\$0\" \"\$1\" '';$<TARGET_FILE:${tool}>;${flag}"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/expect.cmake)
+  set_tests_properties(geomint_cli_corpus_${_name}_empty PROPERTIES TIMEOUT 30 LABELS cli_corpus)
+endfunction()
+
+# Cases every tool shares: unknown flags (with and without a value), stray words.
+foreach(tool geomint-run geomint-order geomint-symplectic geomint-beam geomint-scheme geomint-workprecision)
+  if(EXISTS ${PROJECT_SOURCE_DIR}/tools)  # every tool is built with GEOMINT_BUILD_TOOLS
+    set(_geomint_corpus_index 0)
+    geomint_cli_corpus(${tool} "unknown flag --bogus" --bogus)
+    geomint_cli_corpus(${tool} "unknown flag --bogus" --bogus=3)
+    geomint_cli_corpus(${tool} "unknown flag --bogus" --bogus 3)
+    geomint_cli_corpus(${tool} "unexpected argument 'stray'" stray)
+    if(NOT tool STREQUAL "geomint-beam")  # geomint-beam's --csv takes a file name
+      geomint_cli_corpus(${tool} "--csv takes no value" --csv=1)
+    endif()
+    set(_geomint_corpus_index_${tool} ${_geomint_corpus_index})
+  endif()
+endforeach()
+
+# geomint-run
+set(_geomint_corpus_index ${_geomint_corpus_index_geomint-run})
+geomint_cli_corpus(geomint-run "--tau is out of range" --tau 1e-320)
+geomint_cli_corpus(geomint-run "--tau is out of range" --tau 1e400)
+geomint_cli_corpus(geomint-run "--tau expects a finite number > 0" --tau abc)
+geomint_cli_corpus(geomint-run "--tau expects a finite number > 0" --tau nan)
+geomint_cli_corpus(geomint-run "--tau expects a finite number > 0" --tau inf)
+geomint_cli_corpus(geomint-run "--tau must be a finite number > 0" --tau -1)
+geomint_cli_corpus(geomint-run "--tau must be a finite number > 0" --tau 0)
+geomint_cli_corpus(geomint-run "--tau needs a non-empty value" --tau=)
+geomint_cli_corpus(geomint-run "--tau needs a value" --tau)
+geomint_cli_corpus(geomint-run "--tau needs a value" --tau --csv)
+geomint_cli_corpus(geomint-run "--q0 is out of range" --q0 1e400)
+geomint_cli_corpus_empty(geomint-run --q0)
+geomint_cli_corpus_empty(geomint-run --tau)
+geomint_cli_corpus(geomint-run "--q0 has an empty item" --q0 1,,2)
+geomint_cli_corpus(geomint-run "--q0 needs 2 value" --system kepler --q0 1)
+geomint_cli_corpus(geomint-run "--p0 expects a finite number" --p0 x)
+geomint_cli_corpus(geomint-run "--steps is out of range" --steps 99999999999999999999)
+geomint_cli_corpus(geomint-run "--steps is out of range" --steps -1)
+geomint_cli_corpus(geomint-run "--steps expects an integer" --steps 1.5)
+geomint_cli_corpus(geomint-run "--every is out of range" --every 0)
+geomint_cli_corpus(geomint-run "--m is out of range" --m=9)
+geomint_cli_corpus(geomint-run "--m expects an integer" --m four)
+geomint_cli_corpus(geomint-run "--digits must be one of 16, 50, 100" --digits 15)
+geomint_cli_corpus(geomint-run "--system must be one of" --system moon)
+geomint_cli_corpus(geomint-run "--scheme must be one of" --scheme rk4)
+
+# geomint-order
+set(_geomint_corpus_index ${_geomint_corpus_index_geomint-order})
+geomint_cli_corpus(geomint-order "--steps is out of range" --steps 8,99999999999999999999)
+geomint_cli_corpus(geomint-order "--steps needs at least 2" --steps 8)
+geomint_cli_corpus(geomint-order "--steps must be positive and increasing" --steps 8,4)
+geomint_cli_corpus(geomint-order "--steps has an empty item" --steps 8,,16)
+geomint_cli_corpus(geomint-order "--t-end must be a finite number > 0" --t-end 0)
+geomint_cli_corpus(geomint-order "--t-end expects a finite number > 0" --t-end nan)
+geomint_cli_corpus(geomint-order "--m is out of range" --m 2..9)
+geomint_cli_corpus(geomint-order "--m range '5..3' is empty" --m 5..3)
+geomint_cli_corpus(geomint-order "--threads is out of range" --threads 0)
+geomint_cli_corpus(geomint-order "--digits must be one of 50, 100" --digits 16)
+geomint_cli_corpus(geomint-order "--scheme must be one of" --scheme rk4)
+geomint_cli_corpus(geomint-order "--system must be one of" --system all,moon)
+
+# geomint-symplectic
+set(_geomint_corpus_index ${_geomint_corpus_index_geomint-symplectic})
+geomint_cli_corpus(geomint-symplectic "--long-steps is out of range" --long-steps 99999999999999999999)
+geomint_cli_corpus(geomint-symplectic "--long-steps is out of range" --long-steps -1)
+geomint_cli_corpus(geomint-symplectic "--tau is out of range" --tau 1e-320)
+geomint_cli_corpus(geomint-symplectic "--tau expects a finite number > 0" --tau abc)
+geomint_cli_corpus(geomint-symplectic "--tau must be a finite number > 0" --tau -1)
+geomint_cli_corpus(geomint-symplectic "--long-tau must be a finite number > 0" --long-tau 0)
+geomint_cli_corpus_empty(geomint-symplectic --q0)
+geomint_cli_corpus(geomint-symplectic "--q0 / --p0 need 1 value" --system pendulum --q0 1,2)
+geomint_cli_corpus(geomint-symplectic "--m is out of range" --m 99999999999999999999)
+
+# geomint-beam
+set(_geomint_corpus_index ${_geomint_corpus_index_geomint-beam})
+geomint_cli_corpus(geomint-beam "--steps is out of range" --steps 99999999999999999999)
+geomint_cli_corpus(geomint-beam "--steps expects an integer" --steps 1e3)
+geomint_cli_corpus(geomint-beam "--dt must be a finite number > 0" --dt 0)
+geomint_cli_corpus(geomint-beam "--dt expects a finite number > 0" --dt inf)
+geomint_cli_corpus(geomint-beam "--dt is out of range" --dt 1e-400)
+geomint_cli_corpus(geomint-beam "--nodes is out of range" --nodes 1)
+geomint_cli_corpus(geomint-beam "--nodes is out of range" --nodes 99999999)
+geomint_cli_corpus_empty(geomint-beam --csv)
+geomint_cli_corpus(geomint-beam "--every is out of range" --every 0)
+geomint_cli_corpus(geomint-beam "--scheme must be one of poisson, hamel" --scheme x)
+geomint_cli_corpus(geomint-beam "--snapshots is out of range" --snapshots 1)
+
+# geomint-scheme and geomint-workprecision (ported to cli.hpp by their owners)
+if(EXISTS ${PROJECT_SOURCE_DIR}/tools/analysis/CMakeLists.txt)
+  set(_geomint_corpus_index ${_geomint_corpus_index_geomint-scheme})
+  geomint_cli_corpus(geomint-scheme "--m is out of range" --m 99999999999999999999)
+  geomint_cli_corpus(geomint-scheme "--m needs a value" --m)
+endif()
+if(EXISTS ${PROJECT_SOURCE_DIR}/tools/workprecision/CMakeLists.txt)
+  set(_geomint_corpus_index ${_geomint_corpus_index_geomint-workprecision})
+  geomint_cli_corpus(geomint-workprecision "--t-end is out of range" --t-end 1e400)
+  geomint_cli_corpus(geomint-workprecision "--t-end expects a finite number > 0" --t-end abc)
+  geomint_cli_corpus(geomint-workprecision "--max-seconds must be a finite number > 0" --max-seconds -1)
+endif()
