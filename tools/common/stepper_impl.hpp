@@ -65,19 +65,18 @@ std::unique_ptr<stepper<T>> wrap(const Sys& sys, Engine engine, std::string name
   return std::make_unique<engine_stepper<Engine, Sys, T>>(sys, std::move(engine), std::move(name));
 }
 
-/// The LPF engine of degree M on a family and basis: the family and basis only change the
-/// weight matrices, so one engine type per M serves all of them.
-template <int M, class Family, class Basis, class Sys, class T>
-std::unique_ptr<stepper<T>> make_lpf_fb(const Sys& sys) {
-  using engine = geomint::detail::lpf_engine<Sys, T, M>;
-  return wrap<engine, Sys, T>(sys, typename lpf<M, Family, Basis>::template engine<Sys, T>(sys),
-                              lpf<M, Family, Basis>::name());
+template <class Scheme, class Sys, class T>
+std::unique_ptr<stepper<T>> make_scheme(const Sys& sys) {
+  return wrap<typename Scheme::template engine<Sys, T>, Sys, T>(sys, typename Scheme::template engine<Sys, T>(sys),
+                                                                 Scheme::name());
 }
 
+/// The LPF engine of degree M on a family and basis (the step code is shared by every family:
+/// the family only changes the weights).
 template <int M, class Family, class Sys, class T>
 std::unique_ptr<stepper<T>> make_lpf_f(const scheme_spec& s, const Sys& sys) {
-  if (s.basis == "lagrange") return make_lpf_fb<M, Family, lagrange, Sys, T>(sys);
-  if (s.basis == "bernstein") return make_lpf_fb<M, Family, bernstein, Sys, T>(sys);
+  if (s.basis == "lagrange") return make_scheme<lpf<M, Family, lagrange>, Sys, T>(sys);
+  if (s.basis == "bernstein") return make_scheme<lpf<M, Family, bernstein>, Sys, T>(sys);
   throw std::invalid_argument("unknown basis '" + s.basis + "' (lagrange|bernstein)");
 }
 
@@ -88,12 +87,6 @@ std::unique_ptr<stepper<T>> make_lpf_m(const scheme_spec& s, const Sys& sys) {
   if (s.nodes == "chebyshev") return make_lpf_f<M, chebyshev_lobatto, Sys, T>(s, sys);
   if (s.nodes == "gauss-interior") return make_lpf_f<M, gauss_interior, Sys, T>(s, sys);
   throw std::invalid_argument("unknown node family '" + s.nodes + "' (equispaced|lobatto|chebyshev|gauss-interior)");
-}
-
-template <class Scheme, class Sys, class T>
-std::unique_ptr<stepper<T>> make_scheme(const Sys& sys) {
-  return wrap<typename Scheme::template engine<Sys, T>, Sys, T>(sys, typename Scheme::template engine<Sys, T>(sys),
-                                                                 Scheme::name());
 }
 
 /// Calls f.template operator()<M>() for the run-time m in 2..8.

@@ -11,64 +11,102 @@
 #include <limits>
 #include <string>
 
+#include "geomint/core/quadrature.hpp"
 #include "geomint/schemes/lpf.hpp"
+#include "geomint/schemes/step_skeleton.hpp"
 
 namespace geomint {
 namespace detail {
 
-/// Galerkin engine: degree-M path (controls X_0..X_M), Q-point quadrature (g_k, w_k) on [0, 1].
-/// L_d = tau sum_k w_k L(x(g_k), xdot(g_k)); G_j = dL_d/dX_j.
-template <class Sys, class T, int M, int Q>
-class galerkin_engine {
+/// One Galerkin step as a method of the step skeleton: a degree-M path q + sum_j phi_j Y_j
+/// (controls on a node family in a basis), the action by a Q-point quadrature (g_k, w_k) on
+/// [0, 1]: L_d = tau sum_k w_k L(x(g_k), xdot(g_k)); G_j = dL_d/dX_j. The unknowns are the
+/// increments Y_1..Y_M; the residual rows are tau G_0 + tau p_k (= 0, p_k = -d_1 L_d) and
+/// tau G_1..tau G_{M-1} (= 0, the path extremises the action).
+template <class Sys, class T, int M, int Q, class Basis>
+class galerkin_method {
  public:
-  static constexpr int n = Sys::dof;
+  using scalar = T;
+  static constexpr int dof = Sys::dof;
+  static constexpr int n = dof;
+  static constexpr int unknowns = M * n;
   using V = vec<T, n>;
+  using Z = vec<T, unknowns>;
   using controls = Eigen::Matrix<T, n, M + 1>;
   using D = derivatives<Sys, T>;
   using B = Eigen::Matrix<T, Q, M + 1>;
+  using weights = path_weights<T, M, Basis>;
 
-  galerkin_engine(const Sys& sys, const B& B0, const B& B1, const vec<T, Q>& w, const Eigen::Matrix<T, M + 1, M + 1>& D0,
-                  const std::array<T, M + 1>& c)
-      : sys_(sys), B0_(B0), B1_(B1), w_(w), D0inv_(inverse_of(D0)), c_(c) {}
+  /// B0(k, j) = phi_j(g_k), B1(k, j) = phi_j'(g_k), w: the quadrature weights.
+  galerkin_method(const Sys& sys, const weights& pw, const B& B0, const B& B1, const vec<T, Q>& w)
+      : sys_(sys), pw_(pw), B0_(B0), B1_(B1), w_(w) {}
 
-  /// Unknowns: the increments Y_j = X_j - q_k (the basis is a partition of unity), solved by
-  /// simplified Newton; the iterations after the first need only first derivatives of L.
-  step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt) const {
+  bool predict(const V& q, const V& p, const T& tau, Z& z) const {
     V v0;
-    if (!D::velocity(sys_, q, p, v0)) return {step_failure::singular_jacobian, 0, 0};
+    if (!D::velocity(sys_, q, p, v0)) return false;
     const V a0 = D::acceleration(sys_, q, v0);
-    controls Y = predict_controls<T, n, M>(D0inv_, c_, V::Zero(), v0, a0, tau);
-    Y.col(0).setZero();
-    constexpr int N = M * n;
-    vec<T, N> z;
-    for (int j = 1; j <= M; ++j) z.template segment<n>((j - 1) * n) = Y.col(j);
-    auto residual = [&](const vec<T, N>& zz, vec<T, N>& F, mat<T, N>* J) {
-      for (int j = 1; j <= M; ++j) Y.col(j) = zz.template segment<n>((j - 1) * n);
-      assemble_increments(q, Y, tau, F, J);
-      F.template segment<n>(0) += tau * p;  // p_k + d_1 L_d = 0
-    };
-    const T scale = std::numeric_limits<T>::epsilon() * q.template lpNorm<Eigen::Infinity>();
-    step_status st = newton_solve_simplified<N, T>(residual, z, opt, scale);
-    if (!st) return st;
-    for (int j = 1; j <= M; ++j) Y.col(j) = z.template segment<n>((j - 1) * n);
+    pack_path<T, n, M, unknowns>(pw_.template quadratic<n>(v0, a0, tau), z);
+    return true;
+  }
+  void extrapolate(const Z& previous, Z& z) const { extrapolate_path<T, n, M, unknowns>(pw_.extrapolate, previous, z); }
+
+  /// The iterations after the first need only first derivatives of L (J is null then).
+  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, mat<T, unknowns>* J) const {
+    const controls Y = unpack_path<T, n, M, unknowns>(z);
+    F.setZero();
+    if (J) J->setZero();
+    const T tau2 = tau * tau;
+    for (int k = 0; k < Q; ++k) {
+      const V x = q + combine(Y, B0_, k), v = combine(Y, B1_, k) / tau;
+      if (J) {
+        const hessian_data<T, n> h = D::hessian(sys_, x, v);
+        for (int j = 0; j < M; ++j) {
+          F.template segment<n>(j * n) += w_[k] * (tau2 * B0_(k, j) * h.Lq + tau * B1_(k, j) * h.Lv);
+          for (int s = 0; s < M; ++s) {
+            const int l = 1 + s;
+            J->template block<n, n>(j * n, s * n) +=
+                w_[k] * ((tau2 * B0_(k, j) * B0_(k, l)) * h.Lqq + (tau * B0_(k, j) * B1_(k, l)) * h.Lqv +
+                         (tau * B1_(k, j) * B0_(k, l)) * h.Lvq + (B1_(k, j) * B1_(k, l)) * h.Lvv);
+          }
+        }
+      } else {
+        const gradient_data<T, n> g = D::gradient(sys_, x, v);
+        for (int j = 0; j < M; ++j)
+          F.template segment<n>(j * n) += w_[k] * (tau2 * B0_(k, j) * g.Lq + tau * B1_(k, j) * g.Lv);
+      }
+    }
+    F.template segment<n>(0) += tau * p;  // p_k + d_1 L_d = 0
+  }
+
+  /// q_{k+1} = X_M; p_{k+1} = G_M = sum_j G_j - G_0 - (G_1 + ... + G_{M-1}) = p_k + tau sum_k
+  /// w_k L_q(x_k, v_k) at the solution (the basis sums to 1, its derivatives to 0): the same
+  /// value as G_M, but the Newton and round-off errors of Y do not pass through B1 / tau (an
+  /// RKN-like update).
+  step_status finish(const V& q, const V& p, const T& tau, const Z& z, V& q1, V& p1) const {
+    const controls Y = unpack_path<T, n, M, unknowns>(z);
     q1 = q + Y.col(M);
-    // p_{k+1} = G_M = sum_j G_j - G_0 - (G_1 + ... + G_{M-1}) = p_k + tau sum_k w_k L_q(x_k, v_k)
-    // at the solution (the basis sums to 1, its derivatives to 0): the same value as G_M, but the
-    // Newton and round-off errors of Y do not pass through B1 / tau (an RKN-like update).
     V sum = V::Zero();
     for (int k = 0; k < Q; ++k) {
       const V x = q + combine(Y, B0_, k), v = combine(Y, B1_, k) / tau;
       sum += w_[k] * D::gradient(sys_, x, v).Lq;
     }
     p1 = p + tau * sum;
-    return st;
+    return {};
   }
 
+  /// The control points X_0..X_M of the path fitted on the step from q_k with unknowns z.
+  controls path(const V& q, const Z& z) const {
+    controls X = unpack_path<T, n, M, unknowns>(z);
+    for (int j = 0; j <= M; ++j) X.col(j) += q;
+    return X;
+  }
+
+  /// G_M of the path through x0, x1 whose interior controls extremise the action.
   step_status end_momentum(const V& x0, const V& x1, const T& tau, V& p1, const newton_options<T>& opt) const {
     controls X;
-    for (int i = 0; i <= M; ++i) X.col(i) = x0 + c_[static_cast<std::size_t>(i)] * (x1 - x0);
+    for (int i = 0; i <= M; ++i) X.col(i) = x0 + pw_.c[static_cast<std::size_t>(i)] * (x1 - x0);
     const controls values = X;
-    for (int j = 0; j <= M; ++j) X.col(j) = combine(values, D0inv_, j);
+    for (int j = 0; j <= M; ++j) X.col(j) = combine(values, pw_.D0inv, j);
     X.col(0) = x0;
     X.col(M) = x1;
     step_status st;
@@ -78,64 +116,26 @@ class galerkin_engine {
       for (int j = 1; j < M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
       auto residual = [&](const vec<T, N>& zz, vec<T, N>& F, mat<T, N>& J) {
         for (int j = 1; j < M; ++j) X.col(j) = zz.template segment<n>((j - 1) * n);
-        assemble(X, tau, 1, 1, F, J);
+        interior_rows<N>(X, tau, F, J);
       };
       st = newton_solve<N, T>(residual, z, opt);
       if (!st) return st;
       for (int j = 1; j < M; ++j) X.col(j) = z.template segment<n>((j - 1) * n);
     }
-    p1 = gradient_component(X, tau, M);
-    return st;
-  }
-
- private:
-  /// G_j = dL_d/dX_j = sum_k w_k [tau L_q B0(k,j) + L_v B1(k,j)].
-  V gradient_component(const controls& X, const T& tau, int j) const {
     V G = V::Zero();
     for (int k = 0; k < Q; ++k) {
       const V x = combine(X, B0_, k), v = combine(X, B1_, k) / tau;
       const gradient_data<T, n> g = D::gradient(sys_, x, v);
-      G += w_[k] * (tau * B0_(k, j) * g.Lq + B1_(k, j) * g.Lv);
+      G += w_[k] * (tau * B0_(k, M) * g.Lq + B1_(k, M) * g.Lv);
     }
-    return G;
+    p1 = G;
+    return st;
   }
 
-  /// One-step system for the path q + sum_j phi_j Y_j: rows tau G_0..tau G_{M-1}, columns
-  /// Y_1..Y_M; J (if not null) from second derivatives, F alone from first derivatives.
+ private:
+  /// Rows tau G_1..tau G_{M-1}, columns X_1..X_{M-1} (both ends fixed).
   template <int N>
-  void assemble_increments(const V& q, const controls& Y, const T& tau, vec<T, N>& F, mat<T, N>* J) const {
-    constexpr int blocks = N / n;
-    F.setZero();
-    if (J) J->setZero();
-    const T tau2 = tau * tau;
-    for (int k = 0; k < Q; ++k) {
-      const V x = q + combine(Y, B0_, k), v = combine(Y, B1_, k) / tau;
-      if (J) {
-        const hessian_data<T, n> h = D::hessian(sys_, x, v);
-        for (int r = 0; r < blocks; ++r) {
-          const int j = r;
-          F.template segment<n>(r * n) += w_[k] * (tau2 * B0_(k, j) * h.Lq + tau * B1_(k, j) * h.Lv);
-          for (int s = 0; s < blocks; ++s) {
-            const int l = 1 + s;
-            J->template block<n, n>(r * n, s * n) +=
-                w_[k] * ((tau2 * B0_(k, j) * B0_(k, l)) * h.Lqq + (tau * B0_(k, j) * B1_(k, l)) * h.Lqv +
-                         (tau * B1_(k, j) * B0_(k, l)) * h.Lvq + (B1_(k, j) * B1_(k, l)) * h.Lvv);
-          }
-        }
-      } else {
-        const gradient_data<T, n> g = D::gradient(sys_, x, v);
-        for (int r = 0; r < blocks; ++r) {
-          const int j = r;
-          F.template segment<n>(r * n) += w_[k] * (tau2 * B0_(k, j) * g.Lq + tau * B1_(k, j) * g.Lv);
-        }
-      }
-    }
-  }
-
-  /// Rows j = jrow0..(jrow0 + rows - 1) hold tau G_j; columns are the unknowns X_jcol0..; the
-  /// unknown range is X_1..X_M (one-step, jrow0 = 0) or X_1..X_{M-1} (boundary, jrow0 = 1).
-  template <int N>
-  void assemble(const controls& X, const T& tau, int jrow0, int jcol0, vec<T, N>& F, mat<T, N>& J) const {
+  void interior_rows(const controls& X, const T& tau, vec<T, N>& F, mat<T, N>& J) const {
     constexpr int blocks = N / n;
     F.setZero();
     J.setZero();
@@ -144,10 +144,10 @@ class galerkin_engine {
       const V x = combine(X, B0_, k), v = combine(X, B1_, k) / tau;
       const hessian_data<T, n> h = D::hessian(sys_, x, v);
       for (int r = 0; r < blocks; ++r) {
-        const int j = jrow0 + r;
+        const int j = 1 + r;
         F.template segment<n>(r * n) += w_[k] * (tau2 * B0_(k, j) * h.Lq + tau * B1_(k, j) * h.Lv);
         for (int s = 0; s < blocks; ++s) {
-          const int l = jcol0 + s;
+          const int l = 1 + s;
           J.template block<n, n>(r * n, s * n) +=
               w_[k] * ((tau2 * B0_(k, j) * B0_(k, l)) * h.Lqq + (tau * B0_(k, j) * B1_(k, l)) * h.Lqv +
                        (tau * B1_(k, j) * B0_(k, l)) * h.Lvq + (B1_(k, j) * B1_(k, l)) * h.Lvv);
@@ -157,34 +157,15 @@ class galerkin_engine {
   }
 
   Sys sys_;
+  weights pw_;
   B B0_, B1_;
   vec<T, Q> w_;
-  Eigen::Matrix<T, M + 1, M + 1> D0inv_;
-  std::array<T, M + 1> c_;
 };
 
-/// Basis values (K = 0) or derivatives (K = 1) at points g: out(k, j) = phi_j^(K)(g_k).
-template <int K, class Basis, class Family, int M, class T, int Q>
-Eigen::Matrix<T, Q, M + 1> basis_at(const std::array<T, Q>& g) {
-  Eigen::Matrix<T, Q, M + 1> out;
-  for (int k = 0; k < Q; ++k) {
-    const auto row = basis_derivatives<K, Basis, Family, M, T>(g[static_cast<std::size_t>(k)]);
-    for (int j = 0; j <= M; ++j) out(k, j) = row[static_cast<std::size_t>(j)];
-  }
-  return out;
-}
-
-/// Q-point Gauss-Legendre rule on [0, 1]: the interior nodes of gauss_interior<Q + 1> and
-/// w = 1 / ((1 - x^2) P_Q'(x)^2) with x = 1 - 2g, 1 - x^2 = 4 g (1 - g).
-template <int Q, class T>
-void gauss_legendre(std::array<T, Q>& g, vec<T, Q>& w) {
-  const auto c = nodes<gauss_interior, Q + 1, T>();
-  for (int k = 0; k < Q; ++k) {
-    g[static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k + 1)];
-    const T gk = g[static_cast<std::size_t>(k)];
-    const T dp = legendre_at<T>(Q, gk).dp;
-    w[k] = T(1) / (T(4) * gk * (T(1) - gk) * dp * dp);
-  }
+/// The path weights of a degree-1 path (c = 0, 1): the midpoint and trapezoidal rules.
+template <class T>
+path_weights<T, 1, lagrange> linear_path_weights() {
+  return path_weights<T, 1, lagrange>::template make<equispaced>();
 }
 
 }  // namespace detail
@@ -194,30 +175,29 @@ void gauss_legendre(std::array<T, Q>& g, vec<T, Q>& w) {
 template <int M, class Family = gauss_lobatto, class Basis = lagrange>
 struct galerkin_vi {
   static_assert(M >= 1, "geomint::galerkin_vi: degree m must be >= 1");
-  static_assert(M <= max_floating_m, "geomint::galerkin_vi: m must be <= max_floating_m (16)");
+  static_assert(M + 1 <= max_floating_m, "geomint::galerkin_vi: m must be <= max_floating_m - 1 (15): the m-point Gauss rule uses the Gauss-interior nodes of degree m + 1");
   static_assert(node_family<Family>, "geomint::galerkin_vi: invalid node family");
   static_assert(basis_kind<Basis>, "geomint::galerkin_vi: Basis must be lagrange or bernstein");
   static constexpr int m = M;
   static std::string name() { return "galerkin(m=" + std::to_string(M) + ", gauss-" + std::to_string(M) + ")"; }
 
   template <class Sys, class T>
-  struct engine : detail::galerkin_engine<Sys, T, M, M> {
-    explicit engine(const Sys& sys) : engine(sys, rule()) {}
+  using method = detail::galerkin_method<Sys, T, M, M, Basis>;
+  template <class Sys, class T>
+  struct engine : detail::step_skeleton<method<Sys, T>> {
+    explicit engine(const Sys& sys) : detail::step_skeleton<method<Sys, T>>(make(sys)) {}
 
    private:
-    struct rule_data {
-      std::array<T, M> g;
+    /// m-point Gauss-Legendre quadrature of the action (exact for the degree-2m-1 integrands of
+    /// polynomial Lagrangians of degree 2 in the path).
+    static method<Sys, T> make(const Sys& sys) {
+      const auto rule = gauss_legendre_rule<M, T>();
       vec<T, M> w;
-    };
-    static rule_data rule() {
-      rule_data r;
-      detail::gauss_legendre<M, T>(r.g, r.w);
-      return r;
+      for (int k = 0; k < M; ++k) w[k] = rule.weights[static_cast<std::size_t>(k)];
+      return method<Sys, T>(sys, detail::path_weights<T, M, Basis>::template make<Family>(),
+                            detail::basis_at<0, Basis, Family, M, T, M>(rule.points),
+                            detail::basis_at<1, Basis, Family, M, T, M>(rule.points), w);
     }
-    engine(const Sys& sys, const rule_data& r)
-        : detail::galerkin_engine<Sys, T, M, M>(
-              sys, detail::basis_at<0, Basis, Family, M, T, M>(r.g), detail::basis_at<1, Basis, Family, M, T, M>(r.g), r.w,
-              detail::to_matrix<T, M + 1>(differentiation_weights<0, Family, M, T, Basis>()), nodes<Family, M, T>()) {}
   };
 };
 
@@ -225,12 +205,14 @@ struct galerkin_vi {
 struct midpoint_vi {
   static std::string name() { return "midpoint"; }
   template <class Sys, class T>
-  struct engine : detail::galerkin_engine<Sys, T, 1, 1> {
+  using method = detail::galerkin_method<Sys, T, 1, 1, lagrange>;
+  template <class Sys, class T>
+  struct engine : detail::step_skeleton<method<Sys, T>> {
+    /// One quadrature point at 1/2: x = (x^k + x^{k+1}) / 2, xdot = (x^{k+1} - x^k) / tau.
     explicit engine(const Sys& sys)
-        : detail::galerkin_engine<Sys, T, 1, 1>(sys, values(), slopes(), vec<T, 1>::Constant(T(1)),
-                                                Eigen::Matrix<T, 2, 2>::Identity(), {T(0), T(1)}) {}
-    static Eigen::Matrix<T, 1, 2> values() { return (Eigen::Matrix<T, 1, 2>() << T(1) / T(2), T(1) / T(2)).finished(); }
-    static Eigen::Matrix<T, 1, 2> slopes() { return (Eigen::Matrix<T, 1, 2>() << T(-1), T(1)).finished(); }
+        : detail::step_skeleton<method<Sys, T>>(method<Sys, T>(
+              sys, detail::linear_path_weights<T>(), (Eigen::Matrix<T, 1, 2>() << T(1) / T(2), T(1) / T(2)).finished(),
+              (Eigen::Matrix<T, 1, 2>() << T(-1), T(1)).finished(), vec<T, 1>::Constant(T(1)))) {}
   };
 };
 
@@ -238,12 +220,14 @@ struct midpoint_vi {
 struct trapezoidal_vi {
   static std::string name() { return "trapezoidal"; }
   template <class Sys, class T>
-  struct engine : detail::galerkin_engine<Sys, T, 1, 2> {
+  using method = detail::galerkin_method<Sys, T, 1, 2, lagrange>;
+  template <class Sys, class T>
+  struct engine : detail::step_skeleton<method<Sys, T>> {
+    /// Quadrature points 0 and 1 with weights 1/2; the slope is (x^{k+1} - x^k) / tau at both.
     explicit engine(const Sys& sys)
-        : detail::galerkin_engine<Sys, T, 1, 2>(sys, values(), slopes(), vec<T, 2>::Constant(T(1) / T(2)),
-                                                Eigen::Matrix<T, 2, 2>::Identity(), {T(0), T(1)}) {}
-    static Eigen::Matrix<T, 2, 2> values() { return Eigen::Matrix<T, 2, 2>::Identity(); }
-    static Eigen::Matrix<T, 2, 2> slopes() { return (Eigen::Matrix<T, 2, 2>() << T(-1), T(1), T(-1), T(1)).finished(); }
+        : detail::step_skeleton<method<Sys, T>>(method<Sys, T>(
+              sys, detail::linear_path_weights<T>(), Eigen::Matrix<T, 2, 2>::Identity(),
+              (Eigen::Matrix<T, 2, 2>() << T(-1), T(1), T(-1), T(1)).finished(), vec<T, 2>::Constant(T(1) / T(2)))) {}
   };
 };
 

@@ -24,6 +24,7 @@
 
 #include "geomint/mechanics/constraint.hpp"
 #include "geomint/integrator.hpp"
+#include "geomint/schemes/step_skeleton.hpp"
 
 namespace geomint {
 
@@ -32,32 +33,52 @@ enum class endpoint_terms { keep, drop };
 
 namespace detail {
 
-template <class Sys, class Con, class T, int M>
-class constrained_lpf_engine {
+/// One constrained LPF step as a method of the step skeleton (step_skeleton.hpp). Unknowns:
+/// the increments Y_1..Y_m of the path (X_j = q_k + Y_j), the scaled multipliers
+/// mu_1..mu_{m-1} of the interior nodes and nu of the jump at t_k. With `drop`, the two-step
+/// form's residual leaves out nu and the end condition f(X_m) = 0 (the paper's scheme (23)).
+template <class Sys, class Con, class T, int M, class Basis>
+class constrained_lpf_method {
  public:
-  static constexpr int n = Sys::dof;
+  using scalar = T;
+  static constexpr int dof = Sys::dof;
+  static constexpr int n = dof;
   static constexpr int c = Con::count;
+  static constexpr int unknowns = M * (n + c);
   using V = vec<T, n>;
-  using W = Eigen::Matrix<T, M + 1, M + 1>;
+  using Z = vec<T, unknowns>;
   using controls = Eigen::Matrix<T, n, M + 1>;
   using D = derivatives<Sys, T>;
   using F = constraint_derivatives<Con, T, n>;
+  using weights = path_weights<T, M, Basis>;
 
-  constrained_lpf_engine(const Sys& sys, const Con& con, const W& D0, const W& D1, const W& D2,
-                         const std::array<T, M + 1>& nodes)
-      : sys_(sys), con_(con), D0_(D0), D1_(D1), D2_(D2), D0inv_(inverse_of(D0)), c_(nodes) {}
+  constrained_lpf_method(const Sys& sys, const Con& con, const weights& w) : sys_(sys), con_(con), w_(w) {}
 
   const Sys& system() const { return sys_; }
   const Con& constraints() const { return con_; }
 
-  /// (q_k, p_k) -> (q_{k+1}, p_{k+1}); both ends on the constraint, p_{k+1} projected.
-  step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt) const {
-    V x1;
-    controls X;
-    step_status st = forward(q, p, tau, endpoint_terms::keep, opt, X);
-    if (!st) return st;
-    q1 = X.col(M);
-    V p_end = D::gradient(sys_, q1, V(combine(X, D1_, M) / tau)).Lv;
+  /// The quadratic Taylor polynomial of the path, multipliers zero.
+  bool predict(const V& q, const V& p, const T& tau, Z& z) const {
+    V v0;
+    if (!D::velocity(sys_, q, p, v0)) return false;
+    const V a0 = D::acceleration(sys_, q, v0);
+    z.setZero();
+    pack_path<T, n, M, unknowns>(w_.template quadratic<n>(v0, a0, tau), z);
+    return true;
+  }
+  /// The previous path extrapolated; the multipliers (in z already) kept.
+  void extrapolate(const Z& previous, Z& z) const { extrapolate_path<T, n, M, unknowns>(w_.extrapolate, previous, z); }
+
+  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& Fv, mat<T, unknowns>* J) const {
+    forward_residual<unknowns, true>(q, p, tau, z, Fv, J);
+  }
+
+  /// q_{k+1} = X_m; p_{k+1} = dL/dqdot(t_{k+1}) projected onto the hidden constraint.
+  step_status finish(const V& q, const V&, const T& tau, const Z& z, V& q1, V& p1) const {
+    const controls Y = unpack_path<T, n, M, unknowns>(z);
+    q1 = q + w_.template value<n>(Y, M);
+    const V p_end = D::gradient(sys_, q1, V(combine(Y, w_.D1, M) / tau)).Lv;
+    step_status st;
     if (!project_momentum(q1, p_end, p1)) st.reason = step_failure::singular_jacobian;
     return st;
   }
@@ -69,19 +90,17 @@ class constrained_lpf_engine {
     V p_minus;
     step_status st = end_momentum(x_prev, x_curr, tau, p_minus, opt);
     if (!st) return st;
-    controls X;
-    st = forward(x_curr, p_minus, tau, ends, opt, X);
-    if (st) x_next = X.col(M);
-    return st;
+    if (ends == endpoint_terms::keep) return forward_solve<unknowns, true>(x_curr, p_minus, tau, opt, x_next);
+    return forward_solve<M * n + (M - 1) * c, false>(x_curr, p_minus, tau, opt, x_next);
   }
 
   /// dL/dqdot at t_k of the path on [t_{k-1}, t_k] through x^{k-1}, x^k whose interior nodes
   /// satisfy eq. (4) and f = 0 (eq. 10).
   step_status end_momentum(const V& x0, const V& x1, const T& tau, V& p1, const newton_options<T>& opt) const {
     controls X;
-    for (int i = 0; i <= M; ++i) X.col(i) = x0 + c_[static_cast<std::size_t>(i)] * (x1 - x0);
+    for (int i = 0; i <= M; ++i) X.col(i) = x0 + w_.c[static_cast<std::size_t>(i)] * (x1 - x0);
     const controls values = X;
-    for (int j = 0; j <= M; ++j) X.col(j) = combine(values, D0inv_, j);
+    for (int j = 0; j <= M; ++j) X.col(j) = combine(values, w_.D0inv, j);
     X.col(0) = x0;
     X.col(M) = x1;
     constexpr int N = (M - 1) * (n + c);
@@ -94,12 +113,12 @@ class constrained_lpf_engine {
       J.setZero();
       for (int i = 1; i < M; ++i)
         interior_rows<N>(X, zz, tau, i, /*row=*/(i - 1), /*first unknown=*/1, /*last unknown=*/M - 1, mu_offset,
-                         (M - 1) * n, Fv, J);
+                         (M - 1) * n, Fv, &J);
     };
     step_status st = newton_solve<N, T>(residual, z, opt);
     if (!st) return st;
     for (int j = 1; j < M; ++j) X.col(j) = z.template segment<n>((j - 1) * n);
-    p1 = D::gradient(sys_, x1, V(combine(X, D1_, M) / tau)).Lv;
+    p1 = D::gradient(sys_, x1, V(combine(X, w_.D1, M) / tau)).Lv;
     return st;
   }
 
@@ -134,54 +153,53 @@ class constrained_lpf_engine {
   }
 
  private:
-  /// Forward solve from (x^k, p) with X_0 = x^k. With `keep`: unknowns X_1..X_m, mu_1..mu_{m-1},
-  /// nu and the end condition f(X_m) = 0; with `drop`: nu = 0 and no end condition.
-  step_status forward(const V& q, const V& p, const T& tau, endpoint_terms ends, const newton_options<T>& opt,
-                      controls& X) const {
+  /// The forward equations from (q_k, p) with X_0 = q_k. Rows 0..n-1: tau (dL/dqdot(t_k) - p) +
+  /// G(q_k)^T nu = 0 (eq. 9 with the jump of eq. 5); interior nodes: eq. (4) and f = 0; with
+  /// `keep_ends`, f(X_m) = 0 at t_{k+1} (eq. 5). J (if not null) = dF/dz.
+  template <int N, bool keep_ends>
+  void forward_residual(const V& q, const V& p, const T& tau, const vec<T, N>& z, vec<T, N>& Fv, mat<T, N>* J) const {
+    constexpr int mu_offset = M * n;                                 // mu_1..mu_{m-1}
+    [[maybe_unused]] constexpr int nu_offset = M * n + (M - 1) * c;  // nu (keep only)
+    controls X = unpack_path<T, n, M, N>(z);
+    for (int j = 0; j <= M; ++j) X.col(j) += q;
+    Fv.setZero();
+    if (J) J->setZero();
+    const V v = combine(X, w_.D1, 0) / tau;
+    if (J) {
+      const hessian_data<T, n> h = D::hessian(sys_, q, v);
+      Fv.template segment<n>(0) = tau * (h.Lv - p);
+      for (int j = 1; j <= M; ++j)
+        J->template block<n, n>(0, (j - 1) * n) = (tau * w_.D0(0, j)) * h.Lvq + w_.D1(0, j) * h.Lvv;
+    } else {
+      Fv.template segment<n>(0) = tau * (D::momentum_of(sys_, q, v) - p);
+    }
+    if constexpr (keep_ends) {
+      const auto g0 = F::first(con_, q);
+      Fv.template segment<n>(0) += g0.G.transpose() * z.template segment<c>(nu_offset);
+      if (J) J->template block<n, c>(0, nu_offset) = g0.G.transpose();
+    }
+    for (int i = 1; i < M; ++i) interior_rows<N>(X, z, tau, i, i, 1, M, mu_offset, M * n, Fv, J);
+    if constexpr (keep_ends) {
+      const auto gm = F::first(con_, V(X.col(M)));
+      Fv.template segment<c>(nu_offset) = gm.f;
+      if (J) J->template block<c, n>(nu_offset, (M - 1) * n) = gm.G;
+    }
+  }
+
+  /// The forward solve of the two-step form (no step memory), x_next = X_m.
+  template <int N, bool keep_ends>
+  step_status forward_solve(const V& q, const V& p, const T& tau, const newton_options<T>& opt, V& x_next) const {
     V v0;
     if (!D::velocity(sys_, q, p, v0)) return {step_failure::singular_jacobian, 0, 0};
     const V a0 = D::acceleration(sys_, q, v0);
-    X = predict_controls<T, n, M>(D0inv_, c_, q, v0, a0, tau);
-    X.col(0) = q;
-    if (ends == endpoint_terms::keep) return forward_solve<M * (n + c), true>(q, p, tau, opt, X);
-    return forward_solve<M * n + (M - 1) * c, false>(q, p, tau, opt, X);
-  }
-
-  template <int N, bool keep_ends>
-  step_status forward_solve(const V& q, const V& p, const T& tau, const newton_options<T>& opt, controls& X) const {
-    constexpr int mu_offset = M * n;                  // mu_1..mu_{m-1}
-    [[maybe_unused]] constexpr int nu_offset = M * n + (M - 1) * c;  // nu (keep only)
     vec<T, N> z = vec<T, N>::Zero();
-    for (int j = 1; j <= M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
-    const auto g0 = F::first(con_, q);
-    auto residual = [&](const vec<T, N>& zz, vec<T, N>& Fv, mat<T, N>& J) {
-      for (int j = 1; j <= M; ++j) X.col(j) = zz.template segment<n>((j - 1) * n);
-      Fv.setZero();
-      J.setZero();
-      // Rows 0..n-1: tau (dL/dqdot(t_k) - p) + G(q_k)^T nu = 0 (eq. 9 with the jump of eq. 5).
-      {
-        const V v = combine(X, D1_, 0) / tau;
-        const hessian_data<T, n> h = D::hessian(sys_, q, v);
-        Fv.template segment<n>(0) = tau * (h.Lv - p);
-        for (int j = 1; j <= M; ++j)
-          J.template block<n, n>(0, (j - 1) * n) = (tau * D0_(0, j)) * h.Lvq + D1_(0, j) * h.Lvv;
-        if constexpr (keep_ends) {
-          Fv.template segment<n>(0) += g0.G.transpose() * zz.template segment<c>(nu_offset);
-          J.template block<n, c>(0, nu_offset) = g0.G.transpose();
-        }
-      }
-      // Interior nodes: eq. (4) and f = 0.
-      for (int i = 1; i < M; ++i) interior_rows<N>(X, zz, tau, i, i, 1, M, mu_offset, M * n, Fv, J);
-      // f(X_m) = 0 at t_{k+1} (eq. 5).
-      if constexpr (keep_ends) {
-        const auto gm = F::first(con_, V(X.col(M)));
-        Fv.template segment<c>(nu_offset) = gm.f;
-        J.template block<c, n>(nu_offset, (M - 1) * n) = gm.G;
-      }
+    pack_path<T, n, M, N>(w_.template quadratic<n>(v0, a0, tau), z);
+    auto residual = [&](const vec<T, N>& zz, vec<T, N>& Fv, mat<T, N>* J) {
+      forward_residual<N, keep_ends>(q, p, tau, zz, Fv, J);
     };
-    step_status st = newton_solve<N, T>(residual, z, opt);
-    if (st)
-      for (int j = 1; j <= M; ++j) X.col(j) = z.template segment<n>((j - 1) * n);
+    const T scale = std::numeric_limits<T>::epsilon() * q.template lpNorm<Eigen::Infinity>();
+    const step_status st = newton_solve_simplified<N, T>(residual, z, opt, scale);
+    if (st) x_next = q + w_.template value<n>(unpack_path<T, n, M, N>(z), M);
     return st;
   }
 
@@ -190,33 +208,38 @@ class constrained_lpf_engine {
   /// unknowns X_jlo..X_jhi (stored from column 0) and mu_i (column mu_offset + (i-1) c).
   template <int N>
   void interior_rows(const controls& X, const vec<T, N>& z, const T& tau, int i, int row, int jlo, int jhi,
-                     int mu_offset, int constraint_rows, vec<T, N>& Fv, mat<T, N>& J) const {
-    const V x = combine(X, D0_, i);
-    const V v = combine(X, D1_, i) / tau;
-    const V a = combine(X, D2_, i) / (tau * tau);
-    const el_data<T, n> e = D::euler_lagrange(sys_, x, v, a);
-    const auto g = F::second(con_, x);
+                     int mu_offset, int constraint_rows, vec<T, N>& Fv, mat<T, N>* J) const {
+    const V x = combine(X, w_.D0, i);
+    const V v = combine(X, w_.D1, i) / tau;
+    const V a = combine(X, w_.D2, i) / (tau * tau);
     const int mu_col = mu_offset + (i - 1) * c;
     const vec<T, c> mu = z.template segment<c>(mu_col);
+    const T tau2 = tau * tau;
+    const int f_row = constraint_rows + (i - 1) * c;
+    if (!J) {
+      const auto g = F::first(con_, x);
+      Fv.template segment<n>(row * n) = tau2 * D::el_residual(sys_, x, v, a) - g.G.transpose() * mu;
+      Fv.template segment<c>(f_row) = g.f;
+      return;
+    }
+    const el_data<T, n> e = D::euler_lagrange(sys_, x, v, a);
+    const auto g = F::second(con_, x);
     mat<T, n> curvature = mat<T, n>::Zero();  // sum_l mu_l H_l
     for (int l = 0; l < c; ++l) curvature += mu[l] * g.H[static_cast<std::size_t>(l)];
-    const T tau2 = tau * tau;
     Fv.template segment<n>(row * n) = tau2 * e.E - g.G.transpose() * mu;
-    const int f_row = constraint_rows + (i - 1) * c;
     Fv.template segment<c>(f_row) = g.f;
     for (int j = jlo; j <= jhi; ++j) {
       const int col = (j - jlo) * n;
-      J.template block<n, n>(row * n, col) =
-          D0_(i, j) * (tau2 * e.Ex - curvature) + (tau * D1_(i, j)) * e.Ev + D2_(i, j) * e.Ea;
-      J.template block<c, n>(f_row, col) = D0_(i, j) * g.G;
+      J->template block<n, n>(row * n, col) =
+          w_.D0(i, j) * (tau2 * e.Ex - curvature) + (tau * w_.D1(i, j)) * e.Ev + w_.D2(i, j) * e.Ea;
+      J->template block<c, n>(f_row, col) = w_.D0(i, j) * g.G;
     }
-    J.template block<n, c>(row * n, mu_col) = -g.G.transpose();
+    J->template block<n, c>(row * n, mu_col) = -g.G.transpose();
   }
 
   Sys sys_;
   Con con_;
-  W D0_, D1_, D2_, D0inv_;
-  std::array<T, M + 1> c_;
+  weights w_;
 };
 
 }  // namespace detail
@@ -236,12 +259,21 @@ struct constrained_lpf {
   }
 
   template <class Sys, class Con, class T>
-  struct engine : detail::constrained_lpf_engine<Sys, Con, T, M> {
+  using method = detail::constrained_lpf_method<Sys, Con, T, M, Basis>;
+  template <class Sys, class Con, class T>
+  struct engine : detail::step_skeleton<method<Sys, Con, T>> {
     engine(const Sys& sys, const Con& con)
-        : detail::constrained_lpf_engine<Sys, Con, T, M>(
-              sys, con, detail::to_matrix<T, M + 1>(differentiation_weights<0, Family, M, T, Basis>()),
-              detail::to_matrix<T, M + 1>(differentiation_weights<1, Family, M, T, Basis>()),
-              detail::to_matrix<T, M + 1>(differentiation_weights<2, Family, M, T, Basis>()), nodes<Family, M, T>()) {}
+        : detail::step_skeleton<method<Sys, Con, T>>(
+              method<Sys, Con, T>(sys, con, detail::path_weights<T, M, Basis>::template make<Family>())) {}
+    const Sys& system() const { return this->method().system(); }
+    const Con& constraints() const { return this->method().constraints(); }
+    bool project_momentum(const vec<T, Sys::dof>& q, const vec<T, Sys::dof>& p_end, vec<T, Sys::dof>& p) const {
+      return this->method().project_momentum(q, p_end, p);
+    }
+    step_status two_step(const vec<T, Sys::dof>& x_prev, const vec<T, Sys::dof>& x_curr, const T& tau,
+                         endpoint_terms ends, vec<T, Sys::dof>& x_next, const newton_options<T>& opt) const {
+      return this->method().two_step(x_prev, x_curr, tau, ends, x_next, opt);
+    }
   };
 };
 

@@ -1,0 +1,288 @@
+#pragma once
+/// The step skeleton shared by every implicit scheme (free LPF, Galerkin, midpoint,
+/// trapezoidal, constrained LPF).
+///
+/// A scheme is a small *method* that supplies what one step solves: its unknowns, a predictor,
+/// its residual rows and its end update. The skeleton owns everything else: the packing of the
+/// path into unknowns, the step memory (the previous path extrapolated as the predictor, the
+/// factorised Newton matrix reused while it contracts), the simplified Newton solve and the
+/// failure reporting. A method `Method` provides
+///
+///   using scalar = T;  static constexpr int dof, unknowns;
+///   bool predict(q, p, tau, z)            fresh predictor; false if no velocity belongs to p
+///   void extrapolate(previous_z, z)        predictor continuing the previous step
+///   void residual(q, p, tau, z, F, J*)     F(z) and, if J is not null, dF/dz
+///   step_status finish(q, p, tau, z, q1, p1)  the end update at the solution z
+///
+/// and optionally `end_momentum(x0, x1, tau, p1, opt)` for the two-step form.
+
+#include <array>
+#include <atomic>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+
+#include "geomint/core/basis.hpp"
+#include "geomint/core/differentiation.hpp"
+#include "geomint/core/nodes.hpp"
+#include "geomint/solvers/newton.hpp"
+
+namespace geomint {
+namespace detail {
+
+/// Dense copy of a square_array into an Eigen matrix.
+template <class T, int N>
+Eigen::Matrix<T, N, N> to_matrix(const square_array<T, N>& a) {
+  Eigen::Matrix<T, N, N> m;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) m(i, j) = a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+  return m;
+}
+
+/// sum_j W(i, j) X_j: the path (or a derivative) at row i of a weight matrix. Written as a
+/// loop: for n = 1 Eigen would turn the product into an inner product of mixed types.
+template <class T, int n, int C, class Wm>
+vec<T, n> combine(const Eigen::Matrix<T, n, C>& X, const Wm& W, int i) {
+  vec<T, n> out = vec<T, n>::Zero();
+  for (int j = 0; j < C; ++j) out += W(i, j) * X.col(j);
+  return out;
+}
+
+/// The inverse of a basis-value matrix (nonsingular for distinct nodes).
+template <class T, int N>
+mat<T, N> inverse_of(const mat<T, N>& A) {
+  mat<T, N> inv;
+  if (!invert_small<T, N>(A, inv)) throw std::logic_error("geomint: singular basis collocation matrix");
+  return inv;
+}
+
+/// Basis values (K = 0) or derivatives (K = 1) at points g: out(k, j) = phi_j^(K)(g_k).
+template <int K, class Basis, class Family, int M, class T, int Q>
+Eigen::Matrix<T, Q, M + 1> basis_at(const std::array<T, Q>& g) {
+  Eigen::Matrix<T, Q, M + 1> out;
+  for (int k = 0; k < Q; ++k) {
+    const auto row = basis_derivatives<K, Basis, Family, M, T>(g[static_cast<std::size_t>(k)]);
+    for (int j = 0; j <= M; ++j) out(k, j) = row[static_cast<std::size_t>(j)];
+  }
+  return out;
+}
+
+/// The weights of a degree-M path on a node family in a basis: D_k(i, j) = phi_j^(k)(c_i),
+/// D0^{-1} (node values -> controls), and the extrapolation of a step's increments to the
+/// next step's. The basis is a compile-time property: in the Lagrange basis D0 = I, the
+/// unknowns are node values and `value` needs no product.
+template <class T, int M, class Basis>
+struct path_weights {
+  using W = Eigen::Matrix<T, M + 1, M + 1>;
+  static constexpr bool node_values = std::is_same_v<Basis, lagrange>;
+  std::array<T, M + 1> c{};
+  W D0, D1, D2, D0inv, extrapolate;
+
+  template <class Family>
+  static path_weights make() {
+    path_weights w;
+    w.c = nodes<Family, M, T>();
+    w.D0 = to_matrix<T, M + 1>(differentiation_weights<0, Family, M, T, Basis>());
+    w.D1 = to_matrix<T, M + 1>(differentiation_weights<1, Family, M, T, Basis>());
+    w.D2 = to_matrix<T, M + 1>(differentiation_weights<2, Family, M, T, Basis>());
+    w.D0inv = inverse_of<T, M + 1>(w.D0);
+    w.extrapolate = extrapolation(w.D0, w.D0inv, w.c);
+    return w;
+  }
+
+  /// x(c_i) - q for the path q + sum_j phi_j Y_j (both bases are partitions of unity).
+  template <int n>
+  vec<T, n> value(const Eigen::Matrix<T, n, M + 1>& Y, int i) const {
+    if constexpr (node_values)
+      return Y.col(i);
+    else
+      return combine(Y, D0, i);
+  }
+
+  /// Increments of the quadratic q + tau c v + (tau c)^2 a / 2 (minus q) at the nodes, mapped
+  /// to the basis through D0^{-1}: the predictor of a step that continues no previous one.
+  template <int n>
+  Eigen::Matrix<T, n, M + 1> quadratic(const vec<T, n>& v, const vec<T, n>& a, const T& tau) const {
+    Eigen::Matrix<T, n, M + 1> values;
+    for (int i = 0; i <= M; ++i) {
+      const T s = tau * c[static_cast<std::size_t>(i)];
+      values.col(i) = s * v + (s * s / T(2)) * a;
+    }
+    if constexpr (node_values) return values;
+    Eigen::Matrix<T, n, M + 1> Y;
+    for (int j = 0; j <= M; ++j) Y.col(j) = combine(values, D0inv, j);
+    return Y;
+  }
+
+ private:
+  /// Maps the increments of a step's path to the predicted increments of the next step:
+  /// values at the nodes of the next interval, 1 + c_i, by Lagrange interpolation through the
+  /// path's node values, minus its end value, then back to the basis through D0^{-1}.
+  static W extrapolation(const W& D0, const W& D0inv, const std::array<T, M + 1>& c) {
+    W L;  // L(i, k) = l_k(1 + c_i), the Lagrange polynomials on the nodes
+    for (int i = 0; i <= M; ++i)
+      for (int k = 0; k <= M; ++k) {
+        const T t = T(1) + c[static_cast<std::size_t>(i)];
+        T l(1);
+        for (int j = 0; j <= M; ++j)
+          if (j != k)
+            l *= (t - c[static_cast<std::size_t>(j)]) / (c[static_cast<std::size_t>(k)] - c[static_cast<std::size_t>(j)]);
+        L(i, k) = l;
+      }
+    W values = L * D0;  // values at 1 + c_i of the path with controls e_j
+    for (int i = 0; i <= M; ++i) values.row(i) -= D0.row(M);
+    return D0inv * values;
+  }
+};
+
+/// The increments Y_1..Y_M of a path packed into the first M n unknowns (Y_0 = 0), and back.
+template <class T, int n, int M, int N>
+Eigen::Matrix<T, n, M + 1> unpack_path(const vec<T, N>& z) {
+  static_assert(N >= M * n, "geomint: the unknowns must hold the path increments");
+  Eigen::Matrix<T, n, M + 1> Y;
+  Y.col(0).setZero();
+  for (int j = 1; j <= M; ++j) Y.col(j) = z.template segment<n>((j - 1) * n);
+  return Y;
+}
+template <class T, int n, int M, int N>
+void pack_path(const Eigen::Matrix<T, n, M + 1>& Y, vec<T, N>& z) {
+  for (int j = 1; j <= M; ++j) z.template segment<n>((j - 1) * n) = Y.col(j);
+}
+
+/// The previous path extrapolated (extrapolation matrix E) into the first M n unknowns.
+template <class T, int n, int M, int N>
+void extrapolate_path(const Eigen::Matrix<T, M + 1, M + 1>& E, const vec<T, N>& previous, vec<T, N>& z) {
+  const Eigen::Matrix<T, n, M + 1> Y = unpack_path<T, n, M, N>(previous);
+  for (int i = 1; i <= M; ++i) z.template segment<n>((i - 1) * n) = combine(Y, E, i);
+}
+
+/// Holds an atomic_flag for the lifetime of a scope if it was free.
+class try_lock_flag {
+ public:
+  explicit try_lock_flag(std::atomic_flag& f) : flag_(f), owned_(!f.test_and_set(std::memory_order_acquire)) {}
+  ~try_lock_flag() {
+    if (owned_) flag_.clear(std::memory_order_release);
+  }
+  try_lock_flag(const try_lock_flag&) = delete;
+  try_lock_flag& operator=(const try_lock_flag&) = delete;
+  bool owned() const { return owned_; }
+
+ private:
+  std::atomic_flag& flag_;
+  bool owned_;
+};
+
+/// What the skeleton remembers of its last step, to start the next one well when it continues
+/// from where the last one ended (same q, p and tau): the solution, to extrapolate as the
+/// predictor, and the factorised Newton matrix, to reuse. Guarded by a try-lock: a call that
+/// finds it busy (the same engine used from another thread) simply does not use it. A copy
+/// starts empty.
+template <class T, int n, int N>
+struct step_memory {
+  std::atomic_flag busy;  // clear on construction (C++20)
+  bool valid = false;
+  T tau{};
+  vec<T, n> q1, p1;
+  vec<T, N> z;
+  jacobian_cache<T, N> jacobian;
+  step_memory() = default;
+  step_memory(const step_memory&) : step_memory() {}
+  step_memory& operator=(const step_memory&) {
+    valid = false;
+    jacobian.valid = false;
+    return *this;
+  }
+};
+
+/// The generic implicit step over a method (see the top of this file).
+template <class Method>
+class step_skeleton {
+ public:
+  using method_type = Method;
+  using T = typename Method::scalar;
+  static constexpr int n = Method::dof;
+  static constexpr int N = Method::unknowns;
+  using V = vec<T, n>;
+  using unknowns = vec<T, N>;
+
+  explicit step_skeleton(Method method) : method_(std::move(method)) {}
+
+  const Method& method() const { return method_; }
+
+  /// (q_k, p_k) -> (q_{k+1}, p_{k+1}); `solution` (if not null) receives the unknowns at the
+  /// solution. Predictor: when the step continues the previous one (q_k, p_k and tau equal to
+  /// its result), the method's extrapolation of the previous solution, with the previous
+  /// factorised Newton matrix reused while it contracts well; otherwise the method's fresh
+  /// predictor and a fresh matrix. Either way the result solves the same equations to the
+  /// Newton tolerance. On failure q1, p1 are untouched.
+  step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt,
+                       unknowns* solution = nullptr) const {
+    try_lock_flag lock(memory_.busy);
+    step_memory<T, n, N>* mem = lock.owned() ? &memory_ : nullptr;
+    unknowns z;
+    step_status st;
+    bool done = false;
+    if (mem && mem->valid && tau == mem->tau && q == mem->q1 && p == mem->p1) {
+      z = mem->z;
+      method_.extrapolate(mem->z, z);
+      st = solve(q, p, tau, opt, z, &mem->jacobian);
+      done = static_cast<bool>(st);
+    }
+    if (!done) {
+      if (!method_.predict(q, p, tau, z)) {
+        if (mem) mem->valid = false;
+        return {step_failure::singular_jacobian, 0, 0};
+      }
+      if (mem) mem->jacobian.valid = false;
+      st = solve(q, p, tau, opt, z, mem ? &mem->jacobian : nullptr);
+    }
+    V q_next = V::Zero(), p_next = V::Zero();
+    if (st) {
+      const step_status end = method_.finish(q, p, tau, z, q_next, p_next);
+      if (!end) st.reason = end.reason;
+    }
+    if (!st) {
+      if (mem) mem->valid = false;
+      return st;
+    }
+    q1 = q_next;
+    p1 = p_next;
+    if (solution) *solution = z;
+    if (mem) {
+      mem->valid = true;
+      mem->tau = tau;
+      mem->q1 = q1;
+      mem->p1 = p1;
+      mem->z = z;
+      // Reuse the matrix next step only while it contracts fast enough to reach eps from O(1)
+      // in six corrections (rate^6 <= eps: about 2e-3 in double, 5e-9 in 50 digits);
+      // otherwise a fresh one is cheaper than many slow iterations.
+      const T r2 = mem->jacobian.rate * mem->jacobian.rate;
+      if (r2 * r2 * r2 > std::numeric_limits<T>::epsilon()) mem->jacobian.valid = false;
+    }
+    return st;
+  }
+
+  /// The two-step form's momentum at the end of the path fitted through x0 and x1.
+  step_status end_momentum(const V& x0, const V& x1, const T& tau, V& p1, const newton_options<T>& opt) const
+    requires requires(const Method& m) { m.end_momentum(x0, x1, tau, p1, opt); }
+  {
+    return method_.end_momentum(x0, x1, tau, p1, opt);
+  }
+
+ private:
+  /// Simplified Newton on the method's residual; round-off is judged against eps |q|.
+  step_status solve(const V& q, const V& p, const T& tau, const newton_options<T>& opt, unknowns& z,
+                    jacobian_cache<T, N>* jac) const {
+    auto residual = [&](const unknowns& zz, unknowns& F, mat<T, N>* J) { method_.residual(q, p, tau, zz, F, J); };
+    const T scale = std::numeric_limits<T>::epsilon() * q.template lpNorm<Eigen::Infinity>();
+    return newton_solve_simplified<N, T>(residual, z, opt, scale, jac);
+  }
+
+  Method method_;
+  mutable step_memory<T, n, N> memory_;
+};
+
+}  // namespace detail
+}  // namespace geomint
