@@ -18,6 +18,7 @@
 #include "geomint/mechanics/constraint.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/mechanics/constrained_systems.hpp"
+#include "geomint/mechanics/zoo.hpp"
 // schemes and the integrators built on them
 #include "geomint/schemes/lpf.hpp"
 #include "geomint/schemes/classical.hpp"
@@ -34,3 +35,4 @@
 #include "geomint/analysis/reference_flow.hpp"
 #include "geomint/analysis/order_study.hpp"
 #include "geomint/analysis/symplecticity.hpp"
+#include "geomint/analysis/any_system.hpp"

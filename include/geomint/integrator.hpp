@@ -8,6 +8,7 @@
 ///   auto [x0, x1] = I.start(q0, qdot0);     // consistent start of the two-step form
 ///   auto x2 = I.two_step(x0, x1);           // (x^{k-1}, x^k) -> x^{k+1} (eq. 11-12; schemes 16-22)
 
+#include <type_traits>
 #include <utility>
 
 #include "geomint/schemes/classical.hpp"
@@ -61,12 +62,21 @@ step_status check_step_input(long k, const T& tau, const A& a, const B& b) {
   return st;
 }
 
+/// Sys::dof, or 1 where the contract check has already failed (fewer follow-on errors).
+template <class Sys>
+constexpr int dof_or_one() {
+  if constexpr (has_dof<Sys>) return Sys::dof >= 1 ? Sys::dof : 1;
+  else return 1;
+}
 }  // namespace detail
 
-template <class Scheme, lagrangian_system Sys, class T>
+template <class Scheme, class Sys, class T>
 class integrator {
+  static_assert(checked_system<Sys, T>, "geomint::integrator: Sys does not satisfy the system contract (see above)");
+  static_assert(!detail::is_dual<T>::value, "geomint::integrator: T is the working scalar (double, a Boost.Multiprecision type), not a dual");
+
  public:
-  static constexpr int n = Sys::dof;
+  static constexpr int n = detail::dof_or_one<Sys>();
   using scalar = T;
   using scheme = Scheme;
   using system = Sys;
@@ -97,6 +107,25 @@ class integrator {
     s.q = q0;
     s.p = momentum<Sys, T>(sys_, q0, qdot0);
     return s;
+  }
+
+  /// Data of another scalar type is not converted silently (a double carries 16 digits, not
+  /// those of T): convert explicitly, e.g. `I.initial_state(q0.template cast<T>(), v0.template cast<T>())`.
+  template <class U>
+    requires(!std::is_same_v<U, T>)
+  state initial_state(const vec<U, n>&, const vec<U, n>&) const {
+    static_assert(std::is_same_v<U, T>,
+                  "geomint::integrator: the initial data has another scalar type than the integrator. Convert it "
+                  "explicitly with q0.template cast<T>() (double data carries only 16 significant digits)");
+    return {};
+  }
+  template <class U>
+    requires(!std::is_same_v<U, T>)
+  std::pair<vector, vector> start(const vec<U, n>&, const vec<U, n>&) const {
+    static_assert(std::is_same_v<U, T>,
+                  "geomint::integrator: the initial data has another scalar type than the integrator. Convert it "
+                  "explicitly with q0.template cast<T>() (double data carries only 16 significant digits)");
+    return {};
   }
 
   /// One step of the one-step form without throwing; on failure s is unchanged.

@@ -13,19 +13,15 @@ namespace {
 /// Inverted oscillator L = 1/2 xdot^2 + 4 x^2: for m = 2 the one-step Newton matrix is
 /// [[4, -1], [8 - tau^2 V'', -4]] (rows: eq. 9 scaled by tau, eq. 12 scaled by tau^2), with
 /// determinant -8 - tau^2 V'' = 0 at V'' = -8, tau = 1 (exactly, in every scalar type).
-struct inverted {
-  static constexpr int dof = 1;
+struct inverted : natural<inverted, 1> {
   template <class S>
   static S potential(const vec<S, 1>& q) { return S(-4) * q[0] * q[0]; }
   template <class T>
   static mat<T, 1> mass_matrix() { return mat<T, 1>::Identity(); }
-  template <class S>
-  S operator()(const vec<S, 1>& q, const vec<S, 1>& v) const { return v[0] * v[0] / S(2) - potential<S>(q); }
 };
 /// V = -4 x^2 + exp(x), tau = 1, x = p = 0: eliminating x^{k+1} leaves exp(eta) = 0, which has
 /// no root; Newton walks eta -> eta - 1 forever (divergent).
-struct no_root {
-  static constexpr int dof = 1;
+struct no_root : natural<no_root, 1> {
   template <class S>
   static S potential(const vec<S, 1>& q) {
     using std::exp;
@@ -33,8 +29,6 @@ struct no_root {
   }
   template <class T>
   static mat<T, 1> mass_matrix() { return mat<T, 1>::Identity(); }
-  template <class S>
-  S operator()(const vec<S, 1>& q, const vec<S, 1>& v) const { return v[0] * v[0] / S(2) - potential<S>(q); }
 };
 }  // namespace
 

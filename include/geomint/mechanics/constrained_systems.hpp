@@ -9,15 +9,12 @@
 namespace geomint::systems {
 
 /// A free unit-mass particle in the plane, L = 1/2 |qdot|^2 (with `unit_circle`: example 3.3).
-struct free_particle_2d {
-  static constexpr int dof = 2;
+struct free_particle_2d : natural<free_particle_2d, 2> {
   static constexpr std::string_view name = "circle";
   template <class S>
   static S potential(const vec<S, 2>&) { return S(0); }
   template <class T>
   static mat<T, 2> mass_matrix() { return mat<T, 2>::Identity(); }
-  template <class S>
-  S operator()(const vec<S, 2>&, const vec<S, 2>& v) const { return (v[0] * v[0] + v[1] * v[1]) / S(2); }
 };
 
 /// f(q) = |q|^2 - 1.
@@ -33,17 +30,12 @@ struct unit_circle {
 
 /// Spherical pendulum: unit mass on a unit rod, gravity g = 1 along -z;
 /// L = 1/2 |qdot|^2 - z, f = |q|^2 - 1.
-struct spherical_pendulum {
-  static constexpr int dof = 3;
+struct spherical_pendulum : natural<spherical_pendulum, 3> {
   static constexpr std::string_view name = "spherical";
   template <class S>
   static S potential(const vec<S, 3>& q) { return q[2]; }
   template <class T>
   static mat<T, 3> mass_matrix() { return mat<T, 3>::Identity(); }
-  template <class S>
-  S operator()(const vec<S, 3>& q, const vec<S, 3>& v) const {
-    return (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) / S(2) - potential<S>(q);
-  }
   /// The vertical angular momentum x p_y - y p_x (rotations about the z axis; Noether).
   template <class T>
   static T conserved(const vec<T, 3>& q, const vec<T, 3>& p) { return q[0] * p[1] - q[1] * p[0]; }
@@ -61,15 +53,12 @@ struct unit_sphere {
 
 /// Planar double pendulum in Cartesian coordinates q = (x1, y1, x2, y2): unit masses, unit
 /// rods, gravity 1 along -y; L = 1/2 |qdot|^2 - y1 - y2.
-struct double_pendulum_cartesian {
-  static constexpr int dof = 4;
+struct double_pendulum_cartesian : natural<double_pendulum_cartesian, 4> {
   static constexpr std::string_view name = "double-cartesian";
   template <class S>
   static S potential(const vec<S, 4>& q) { return q[1] + q[3]; }
   template <class T>
   static mat<T, 4> mass_matrix() { return mat<T, 4>::Identity(); }
-  template <class S>
-  S operator()(const vec<S, 4>& q, const vec<S, 4>& v) const { return v.squaredNorm() / S(2) - potential<S>(q); }
 };
 
 /// Two distance constraints: |q1|^2 = 1 and |q2 - q1|^2 = 1.

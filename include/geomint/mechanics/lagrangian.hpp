@@ -1,16 +1,26 @@
 #pragma once
-/// Lagrangian systems and their derivatives by forward-mode AD.
+/// Lagrangian systems, the checked system contract, and derivatives by forward-mode AD.
 ///
-/// A system is a type with `static constexpr int dof` and a call operator templated on the
-/// scalar, `S operator()(const Eigen::Matrix<S, dof, 1>& q, const Eigen::Matrix<S, dof, 1>& qdot)`,
-/// returning L(q, qdot). A *natural* system additionally provides
-/// `template <class S> static S potential(const Eigen::Matrix<S, dof, 1>& q)` and
-/// `template <class T> static Eigen::Matrix<T, dof, dof> mass_matrix()` (constant, SPD), with
-/// L = 1/2 qdot^T M qdot - V(q); the integrators then take a fast path (no third derivatives).
-/// Wrap a natural system in `geomint::general<Sys>` to force the general (AD on L) path.
+/// A *general* system is a type with `static constexpr int dof` and a call operator templated
+/// on the scalar,
+///   template <class S> S operator()(const geomint::vec<S, dof>& q, const geomint::vec<S, dof>& qdot) const,
+/// returning L(q, qdot). The integrators differentiate it with nested dual numbers, so math
+/// functions must be called unqualified (`using std::cos; cos(q[0])`).
+///
+/// A *natural* system, L = 1/2 qdot^T M qdot - V(q) with constant SPD M, is declared as such by
+/// deriving from `geomint::natural<Self, dof>` and providing
+///   template <class S> static S potential(const geomint::vec<S, dof>& q);
+///   template <class S> static geomint::mat<S, dof> mass_matrix();
+/// The base derives operator() from them, so the fast path (no third derivatives) and the
+/// Lagrangian cannot disagree; a natural system may not define its own operator(). A system
+/// with any other term (e.g. a magnetic A(q) . qdot) is a general system.
+///
+/// `geomint::checked_system<Sys, T>` checks the contract for the scalar T and the dual types the
+/// integrators use, with one readable static_assert per mistake; the integrators assert it.
 
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <utility>
 #include <string_view>
@@ -23,19 +33,128 @@
 
 namespace geomint {
 
-/// A Lagrangian in n = Sys::dof degrees of freedom, callable over any scalar (double is checked).
-template <class Sys>
-concept lagrangian_system = requires { Sys::dof; } && (Sys::dof >= 1) &&
-    requires(const Sys& s, const vec<double, Sys::dof>& q) {
-      { s(q, q) } -> std::convertible_to<double>;
-    };
+/// The tag of the natural-system base (see natural below).
+struct natural_tag {};
 
-/// L = 1/2 qdot^T M qdot - V(q) with constant M: the fast path.
-template <class Sys>
-concept natural_system = lagrangian_system<Sys> && requires(const vec<double, Sys::dof>& q) {
-  { Sys::template potential<double>(q) } -> std::convertible_to<double>;
-  { Sys::template mass_matrix<double>() } -> std::convertible_to<mat<double, Sys::dof>>;
+/// Base of a natural system Self: L = 1/2 qdot^T M qdot - V(q) from Self::potential and
+/// Self::mass_matrix, so the integrators' fast path and the Lagrangian are the same function.
+template <class Self, int n>
+struct natural : natural_tag {
+  static_assert(n >= 1, "geomint::natural<Self, n>: n is the number of degrees of freedom and must be >= 1");
+  static constexpr int dof = n;
+  template <class S>
+  S operator()(const vec<S, n>& q, const vec<S, n>& qdot) const {
+    const mat<S, n> M = Self::template mass_matrix<S>();
+    S kinetic(0);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) kinetic += qdot[i] * M(i, j) * qdot[j];
+    return S(kinetic / S(2) - Self::template potential<S>(q));
+  }
 };
+
+namespace detail {
+/// The dual types the integrators call a Lagrangian with (mechanics/lagrangian.hpp below):
+/// gradient, Hessian and Euler-Lagrange Jacobian levels of the general path.
+template <class T, int n>
+using gradient_dual = dual<T, 2 * n>;
+template <class T, int n>
+using hessian_dual = dual<dual<T, 2 * n>, 2 * n>;
+template <class T, int n>
+using euler_lagrange_dual = dual<dual<dual<T, 3 * n>, 1>, 2 * n>;
+
+template <class Sys>
+concept has_dof = requires { typename std::integral_constant<int, Sys::dof>; };
+
+template <class Sys, class S>
+concept callable_over = requires(const Sys& s, const vec<S, Sys::dof>& q) { s(q, q); };
+
+template <class Sys, class S>
+concept returns_scalar = requires(const Sys& s, const vec<S, Sys::dof>& q) {
+  { s(q, q) } -> std::same_as<S>;
+};
+
+template <class Sys, class S>
+concept static_potential = requires(const vec<S, Sys::dof>& q) {
+  { Sys::template potential<S>(q) } -> std::same_as<S>;
+  { Sys::template mass_matrix<S>() } -> std::convertible_to<mat<S, Sys::dof>>;
+};
+template <class Sys, class S>
+concept member_potential = requires(const Sys& s, const vec<S, Sys::dof>& q) { s.template potential<S>(q); };
+
+/// Whether operator() of a natural system is the one natural<Sys, dof> derives (not redefined).
+template <class Sys>
+concept uses_natural_operator = requires { &Sys::template operator()<double>; } &&
+    std::is_same_v<decltype(&Sys::template operator()<double>),
+                   double (natural<Sys, Sys::dof>::*)(const vec<double, Sys::dof>&, const vec<double, Sys::dof>&) const>;
+
+/// One readable static_assert per contract violation, checked in order.
+template <class Sys, class T>
+constexpr bool check_system() {
+  if constexpr (!has_dof<Sys>) {
+    static_assert(has_dof<Sys>,
+                  "geomint: a system needs `static constexpr int dof = n;` (its number of degrees of freedom, n >= 1)");
+    return false;
+  } else if constexpr (!(Sys::dof >= 1)) {
+    static_assert(Sys::dof >= 1, "geomint: a system's dof (number of degrees of freedom) must be >= 1");
+    return false;
+  } else if constexpr (std::is_base_of_v<natural_tag, Sys> && !std::is_base_of_v<natural<Sys, Sys::dof>, Sys>) {
+    static_assert(std::is_base_of_v<natural<Sys, Sys::dof>, Sys>,
+                  "geomint: a natural system derives from geomint::natural<Self, dof> with Self its own type and "
+                  "dof its number of degrees of freedom");
+    return false;
+  } else if constexpr (std::is_base_of_v<natural_tag, Sys> && member_potential<Sys, T> && !static_potential<Sys, T>) {
+    static_assert(static_potential<Sys, T>,
+                  "geomint: a natural system's potential and mass_matrix must be static member templates: "
+                  "`template <class S> static S potential(const geomint::vec<S, dof>& q)` and "
+                  "`template <class S> static geomint::mat<S, dof> mass_matrix()`");
+    return false;
+  } else if constexpr (std::is_base_of_v<natural_tag, Sys> && !static_potential<Sys, T>) {
+    static_assert(static_potential<Sys, T>,
+                  "geomint: a natural system (derived from geomint::natural) needs "
+                  "`template <class S> static S potential(const geomint::vec<S, dof>& q)` and "
+                  "`template <class S> static geomint::mat<S, dof> mass_matrix()`, templated on the scalar S");
+    return false;
+  } else if constexpr (std::is_base_of_v<natural_tag, Sys> && !uses_natural_operator<Sys>) {
+    static_assert(uses_natural_operator<Sys>,
+                  "geomint: a natural system must not define operator(): its Lagrangian is 1/2 qdot^T M qdot - V(q), "
+                  "derived from potential() and mass_matrix(). For any other term (e.g. a magnetic A(q) . qdot) "
+                  "write a general system: operator() alone, without the geomint::natural base");
+    return false;
+  } else if constexpr (!callable_over<Sys, T>) {
+    static_assert(callable_over<Sys, T>,
+                  "geomint: the system cannot be called as L(q, qdot) with q, qdot of type geomint::vec<S, dof>: "
+                  "check that `dof` equals the size your operator() takes, and declare it as "
+                  "`template <class S> S operator()(const geomint::vec<S, dof>& q, const geomint::vec<S, dof>& qdot) const`");
+    return false;
+  } else if constexpr (!(returns_scalar<Sys, T> && returns_scalar<Sys, gradient_dual<T, Sys::dof>> &&
+                         returns_scalar<Sys, hessian_dual<T, Sys::dof>> &&
+                         returns_scalar<Sys, euler_lagrange_dual<T, Sys::dof>>)) {
+    static_assert(returns_scalar<Sys, T> && returns_scalar<Sys, euler_lagrange_dual<T, Sys::dof>>,
+                  "geomint: the Lagrangian must be a template on its scalar type S and return S: "
+                  "`template <class S> S operator()(const geomint::vec<S, dof>& q, const geomint::vec<S, dof>& qdot) const`. "
+                  "The integrators call it with nested dual numbers to differentiate it, so a Lagrangian written "
+                  "for double (or for one scalar type) cannot be used");
+    return false;
+  } else {
+    return true;
+  }
+}
+}  // namespace detail
+
+/// True if Sys satisfies the system contract for the scalar T (double by default); if not,
+/// compilation stops at a static_assert that names the mistake.
+template <class Sys, class T = double>
+inline constexpr bool checked_system = detail::check_system<Sys, T>();
+
+/// A Lagrangian in n = Sys::dof degrees of freedom, callable over double and the dual types.
+template <class Sys>
+concept lagrangian_system = detail::has_dof<Sys> && (Sys::dof >= 1) && detail::returns_scalar<Sys, double> &&
+                            detail::returns_scalar<Sys, detail::euler_lagrange_dual<double, Sys::dof>>;
+
+/// A system declared natural (derived from geomint::natural): the fast path.
+template <class Sys>
+concept natural_system = lagrangian_system<Sys> && std::is_base_of_v<natural_tag, Sys> &&
+                         detail::static_potential<Sys, double> && detail::uses_natural_operator<Sys>;
 
 /// Hides the natural-system structure of Sys: derivatives then come from AD on L itself.
 template <lagrangian_system Sys>

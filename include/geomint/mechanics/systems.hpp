@@ -8,20 +8,16 @@
 namespace geomint::systems {
 
 /// L = 1/2 xdot^2 - 1/2 x^2 (eq. 15).
-struct harmonic {
-  static constexpr int dof = 1;
+struct harmonic : natural<harmonic, 1> {
   static constexpr std::string_view name = "harmonic";
   template <class S>
   static S potential(const vec<S, 1>& q) { return q[0] * q[0] / S(2); }
   template <class T>
   static mat<T, 1> mass_matrix() { return mat<T, 1>::Identity(); }
-  template <class S>
-  S operator()(const vec<S, 1>& q, const vec<S, 1>& v) const { return v[0] * v[0] / S(2) - potential<S>(q); }
 };
 
 /// L = 1/2 thetadot^2 - (1 - cos theta) (eq. 20).
-struct pendulum {
-  static constexpr int dof = 1;
+struct pendulum : natural<pendulum, 1> {
   static constexpr std::string_view name = "pendulum";
   template <class S>
   static S potential(const vec<S, 1>& q) {
@@ -30,14 +26,11 @@ struct pendulum {
   }
   template <class T>
   static mat<T, 1> mass_matrix() { return mat<T, 1>::Identity(); }
-  template <class S>
-  S operator()(const vec<S, 1>& q, const vec<S, 1>& v) const { return v[0] * v[0] / S(2) - potential<S>(q); }
 };
 
 /// L = 1/2 |qdot|^2 + 1/|q| (planar Kepler problem, mu = 1). Rotation invariant, so the
 /// angular momentum q x p is the Noether quantity.
-struct kepler {
-  static constexpr int dof = 2;
+struct kepler : natural<kepler, 2> {
   static constexpr std::string_view name = "kepler";
   template <class S>
   static S potential(const vec<S, 2>& q) {
@@ -46,8 +39,6 @@ struct kepler {
   }
   template <class T>
   static mat<T, 2> mass_matrix() { return mat<T, 2>::Identity(); }
-  template <class S>
-  S operator()(const vec<S, 2>& q, const vec<S, 2>& v) const { return (v[0] * v[0] + v[1] * v[1]) / S(2) - potential<S>(q); }
   /// q x p.
   template <class T>
   static T conserved(const vec<T, 2>& q, const vec<T, 2>& p) { return q[0] * p[1] - q[1] * p[0]; }
