@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cli.hpp"
 #include "regimes.hpp"
 
 namespace {
@@ -39,83 +40,29 @@ const char* usage =
     "50 digits 1/10 at 1e-30).\n"
     "--methods restricts the run to a comma-separated list of method names (see the table).\n";
 
-int fail(const std::string& why) {
-  std::cerr << "geomint-workprecision: " << why << "\n" << usage;
-  return 2;
-}
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-bool parse_positive(const std::string& s, double& out) {
-  char* end = nullptr;
-  out = std::strtod(s.c_str(), &end);
-  return !s.empty() && end && *end == '\0' && std::isfinite(out) && out > 0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   geomint::workprecision::settings o;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i], v;
-    bool has_inline = false;
-    if (const auto eq = a.find('='); a.rfind("--", 0) == 0 && eq != std::string::npos) {
-      v = a.substr(eq + 1);
-      a = a.substr(0, eq);
-      has_inline = true;
-    }
-    auto value = [&](std::string& out) {
-      if (has_inline) return true;
-      if (i + 1 >= argc) return false;
-      out = argv[++i];
-      return true;
-    };
-    if (a == "--csv" && !has_inline) {
-      o.csv = true;
-    } else if ((a == "--help" || a == "-h") && !has_inline) {
-      std::cout << usage;
-      return 0;
-    } else if (a == "--system") {
-      if (!value(v) || (v != "pendulum" && v != "kepler")) return fail("--system must be pendulum or kepler");
-      o.system = v;
-    } else if (a == "--digits") {
-      if (!value(v) || (v != "16" && v != "50")) return fail("--digits must be 16 or 50");
-      o.digits = v == "16" ? 16 : 50;
-    } else if (a == "--t-end") {
-      double x = 0;
-      if (!value(v) || !parse_positive(v, x)) return fail("--t-end must be a number > 0");
-      o.t_end = x;
-    } else if (a == "--max-seconds") {
-      double x = 0;
-      if (!value(v) || !parse_positive(v, x)) return fail("--max-seconds must be a number > 0");
-      o.max_seconds = x;
-    } else if (a == "--methods") {
-      if (!value(v) || split(v).empty()) return fail("--methods needs a comma-separated list of method names");
-      o.only = split(v);
-    } else {
-      return fail("unknown argument '" + std::string(argv[i]) + "'");
-    }
-  }
+  geomint::cli::parser cl("geomint-workprecision", usage);
+  cl.toggle("--csv", [&] { o.csv = true; })
+      .value("--system", [&](const std::string& v) { o.system = geomint::cli::parse_choice("--system", v, {"pendulum", "kepler"}); })
+      .value("--digits",
+             [&](const std::string& v) { o.digits = geomint::cli::parse_choice("--digits", v, {"16", "50"}) == "16" ? 16 : 50; })
+      .value("--t-end", [&](const std::string& v) { o.t_end = geomint::cli::parse_real("--t-end", v, geomint::cli::real_bound::positive); })
+      .value("--max-seconds",
+             [&](const std::string& v) { o.max_seconds = geomint::cli::parse_real("--max-seconds", v, geomint::cli::real_bound::positive); })
+      .value("--methods", [&](const std::string& v) { o.only = geomint::cli::split_list("--methods", v); });
+  if (const auto done = cl.parse(argc, argv)) return *done;
   try {
     using namespace geomint::workprecision;
     int rc = 0;
     if (o.system == "kepler") rc = o.digits == 16 ? run_kepler_16(o) : run_kepler_50(o);
     else rc = o.digits == 16 ? run_pendulum_16(o) : run_pendulum_50(o);
-    std::cout.flush();
-    if (!std::cout) {
-      std::cerr << "geomint-workprecision: writing the output failed\n";
-      return 1;
-    }
-    return rc;
+    return geomint::cli::finish_stdout("geomint-workprecision", rc);
   } catch (const std::invalid_argument& e) {
-    return fail(e.what());
+    std::cerr << "geomint-workprecision: " << e.what() << "\n" << usage;
+    return geomint::cli::exit_usage;
   } catch (const std::exception& e) {
     std::cerr << "geomint-workprecision: " << e.what() << "\n";
     return 1;
