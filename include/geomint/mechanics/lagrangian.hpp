@@ -3,14 +3,14 @@
 ///
 /// A *general* system is a type with `static constexpr int dof` and a call operator templated
 /// on the scalar,
-///   template <class S> S operator()(const geomint::vec<S, dof>& q, const geomint::vec<S, dof>& qdot) const,
+/// `template <class S> S operator()(const geomint::vec<S, dof>& q, const geomint::vec<S, dof>& qdot) const`,
 /// returning L(q, qdot). The integrators differentiate it with nested dual numbers, so math
 /// functions must be called unqualified (`using std::cos; cos(q[0])`).
 ///
 /// A *natural* system, L = 1/2 qdot^T M qdot - V(q) with constant SPD M, is declared as such by
 /// deriving from `geomint::natural<Self, dof>` and providing
-///   template <class S> static S potential(const geomint::vec<S, dof>& q);
-///   template <class S> static geomint::mat<S, dof> mass_matrix();
+/// `template <class S> static S potential(const geomint::vec<S, dof>& q)` and
+/// `template <class S> static geomint::mat<S, dof> mass_matrix()`.
 /// The base derives operator() from them, so the fast path (no third derivatives) and the
 /// Lagrangian cannot disagree; a natural system may not define its own operator(). A system
 /// with any other term (e.g. a magnetic A(q) . qdot) is a general system.
