@@ -53,9 +53,6 @@ struct qpoly {
   static constexpr int capacity = 2 * max_stability_degree + 3;
   exact_number c[capacity];
   int degree = -1;
-  constexpr qpoly() {
-    for (exact_number& x : c) x = exact_number(0);  // explicitly: see stage_vector (rkn_tableau.hpp)
-  }
   constexpr void trim() {
     degree = capacity - 1;
     while (degree >= 0 && c[degree].num.is_zero()) --degree;

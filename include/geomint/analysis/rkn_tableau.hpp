@@ -63,14 +63,17 @@ enum class stage_basis {
 
 /// A stage vector: s exact coordinates.
 ///
-/// The structs holding arrays of exact numbers assign every element in their constructors:
-/// GCC 12 (constant evaluation and code generation alike) otherwise produced zero-filled
-/// elements (zero denominators) for default-initialised array elements of these aggregates.
+/// Arrays of exact numbers are default-initialised (`exact_number v[N];`, no braces) throughout
+/// the scheme algebra: big_rational's user-provided default constructor makes every element 0/1.
+/// Value-initialising them (`v[N]{}`) is equivalent by the standard, but GCC 12 represents a
+/// value-initialised array of class type as one shared element initialiser for an index range,
+/// and after some elements were assigned, a copy of a remaining element taken from a copy of
+/// the array came out zero-filled (denominator 0) in constant evaluation: `symmetry` of a
+/// tableau whose `c` vector was built that way threw "zero denominator" (lpf m >= 5 after m = 4
+/// had been evaluated). Default-initialisation runs the constructor element by element and
+/// has no such range.
 struct stage_vector {
   exact_number v[max_exact_stages];
-  constexpr stage_vector() {
-    for (exact_number& x : v) x = exact_number(0);  // explicitly: see above
-  }
   friend constexpr bool operator==(const stage_vector&, const stage_vector&) = default;
   constexpr const exact_number& operator[](int k) const { return v[k]; }
   constexpr exact_number& operator[](int k) { return v[k]; }
@@ -84,17 +87,8 @@ struct exact_rkn_tableau {
   exact_number a[max_exact_stages][max_exact_stages];  ///< the operator A on coordinates: (A v)_i = sum_j a[i][j] v_j
   exact_number bbar[max_exact_stages];                 ///< the functional bbar: bbar(v) = sum_k bbar[k] v_k
   exact_number b[max_exact_stages];                    ///< the functional b
-  stage_vector c{};                                      ///< the vector of nodes (x mod N, or c itself)
-  stage_vector one{};                                    ///< the vector of ones
-
-  constexpr exact_rkn_tableau() {  // every element assigned explicitly: see stage_vector
-    for (int i = 0; i < max_exact_stages; ++i) {
-      for (int j = 0; j < max_exact_stages; ++j) a[i][j] = exact_number(0);
-      bbar[i] = exact_number(0);
-      b[i] = exact_number(0);
-    }
-    for (exact_number& x : node_polynomial) x = exact_number(0);
-  }
+  stage_vector c;                                      ///< the vector of nodes (x mod N, or c itself)
+  stage_vector one;                                    ///< the vector of ones
 
   /// Componentwise product of stage vectors (product modulo N in the monomial basis).
   constexpr stage_vector multiply(const stage_vector& u, const stage_vector& w) const {
@@ -154,10 +148,7 @@ namespace detail {
 /// Polynomial coefficients (ascending) of up to degree 2 max_exact_stages + 2.
 struct exact_poly_buffer {
   static constexpr int capacity = 2 * max_exact_stages + 3;
-  exact_number c[capacity];
-  constexpr exact_poly_buffer() {
-    for (exact_number& x : c) x = exact_number(0);  // explicitly: see stage_vector
-  }
+  exact_number c[capacity];  // default-initialised: see stage_vector
 };
 
 /// The collocation tableau (LPF interior nodes) on the roots of a monic N of degree s.

@@ -31,12 +31,6 @@ struct symplecticity_result {
   bool second_condition = false;  ///< b_i (bbar_j - a_ij) = b_j (bbar_i - a_ji)
   exact_number first_defect[max_exact_stages];                     ///< d1 on the basis
   exact_number second_defect[max_exact_stages][max_exact_stages];  ///< d2 on the basis
-  constexpr symplecticity_result() {  // every element assigned explicitly: see stage_vector
-    for (int i = 0; i < max_exact_stages; ++i) {
-      first_defect[i] = exact_number(0);
-      for (int j = 0; j < max_exact_stages; ++j) second_defect[i][j] = exact_number(0);
-    }
-  }
   friend constexpr bool operator==(const symplecticity_result&, const symplecticity_result&) = default;
 };
 
@@ -47,13 +41,6 @@ struct symmetry_result {
   exact_number a_defect[max_exact_stages][max_exact_stages];  ///< A* - P A P
   exact_number bbar_defect[max_exact_stages];                 ///< bbar* - bbar P
   exact_number b_defect[max_exact_stages];                    ///< b - b P
-  constexpr symmetry_result() {  // every element assigned explicitly: see stage_vector
-    for (int i = 0; i < max_exact_stages; ++i) {
-      bbar_defect[i] = exact_number(0);
-      b_defect[i] = exact_number(0);
-      for (int j = 0; j < max_exact_stages; ++j) a_defect[i][j] = exact_number(0);
-    }
-  }
   friend constexpr bool operator==(const symmetry_result&, const symmetry_result&) = default;
 };
 
