@@ -45,9 +45,10 @@ static_assert(tree_order(galerkin_tableau<1>()) == 2 && tree_order(galerkin_tabl
 static_assert(tree_order(galerkin_tableau<3>()) == 6 && tree_order(galerkin_tableau<4>()) == 8);
 template <int M>
 constexpr bool galerkin_quadrature_orders() {
-  if (quadrature_order(galerkin_tableau<M>()) != 2 * M) return false;
-  if (!symplecticity(galerkin_tableau<M>()).symplectic) return false;
-  if (!symmetry(galerkin_tableau<M>()).symmetric) return false;
+  constexpr exact_rkn_tableau t = galerkin_tableau<M>();  // evaluated once
+  if (quadrature_order(t) != 2 * M) return false;
+  if (!symplecticity(t).symplectic) return false;
+  if (!symmetry(t).symmetric) return false;
   if constexpr (M < 8) return galerkin_quadrature_orders<M + 1>();
   return true;
 }

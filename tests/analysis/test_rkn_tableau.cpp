@@ -251,3 +251,19 @@ TEST_CASE("exact symplecticity verdicts agree with the numerical defects of the 
   // Gauss interior (7), m = 2 of the other three families, Galerkin (8), midpoint, trapezoidal.
   CHECK(symplectic_count == 7 + 3 + 8 + 2);
 }
+
+TEST_CASE("user tableaux built at run time equal the ones built at compile time", "[analysis][tableau]") {
+  // Run-time construction from run-time data exercises the code paths that GCC 12 once
+  // miscompiled (default-initialised local arrays of exact numbers, zero-filled); the
+  // compile-time value is the independent reference.
+  volatile int k = 5;  // not a constant
+  const int a = k;
+  const exact_rkn_tableau from_nodes =
+      collocation_tableau_from_nodes<3>({rational(a, 40), rational(1, 2), rational(40 - a, 40)});
+  constexpr exact_rkn_tableau expected = collocation_tableau_from_nodes<3>({rational(5, 40), rational(1, 2), rational(35, 40)});
+  CHECK(from_nodes == expected);
+  const exact_rkn_tableau from_polynomial =
+      collocation_tableau_from_polynomial<2>({rational(a, 30), rational(-1), rational(1)});  // x^2 - x + 1/6
+  CHECK(from_polynomial == lpf_tableau<3, gauss_interior>());
+  CHECK(tree_order(from_nodes) == 4);
+}

@@ -115,7 +115,7 @@ std::vector<decimal> stages_of(const std::string& scheme, const std::string& fam
   return lpf_nodes_of<chebyshev_lobatto, 2>(m);
 }
 
-decimal to_decimal(const exact_number& x) { return decimal(x.num.str()) / decimal(x.den.str()); }
+decimal to_decimal(const exact_number& x) { return decimal(x.num.str()) / decimal(x.den().str()); }
 
 std::string digits30(const decimal& x) {
   std::ostringstream s;

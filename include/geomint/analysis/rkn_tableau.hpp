@@ -63,15 +63,13 @@ enum class stage_basis {
 
 /// A stage vector: s exact coordinates.
 ///
-/// Arrays of exact numbers are default-initialised (`exact_number v[N];`, no braces) throughout
-/// the scheme algebra: big_rational's user-provided default constructor makes every element 0/1.
-/// Value-initialising them (`v[N]{}`) is equivalent by the standard, but GCC 12 represents a
-/// value-initialised array of class type as one shared element initialiser for an index range,
-/// and after some elements were assigned, a copy of a remaining element taken from a copy of
-/// the array came out zero-filled (denominator 0) in constant evaluation: `symmetry` of a
-/// tableau whose `c` vector was built that way threw "zero denominator" (lpf m >= 5 after m = 4
-/// had been evaluated). Default-initialisation runs the constructor element by element and
-/// has no such range.
+/// Arrays of exact numbers need no initialiser: the default (and the zero-filled) exact number
+/// is 0, bit for bit (big_rational stores its denominator minus one). That is what makes them
+/// safe from GCC 12, which zero-fills such arrays on two paths: a copied element of a partly
+/// assigned value-initialised array in constant evaluation (`symmetry` of lpf m >= 5 threw
+/// "zero denominator" after m = 4 had been evaluated), and the folded default-initialisation of a
+/// local array at run time, which ran the constructor on the first two elements only (a
+/// collocation tableau built at run time threw). With a denominator stored as is, both gave 0/0.
 struct stage_vector {
   exact_number v[max_exact_stages];
   friend constexpr bool operator==(const stage_vector&, const stage_vector&) = default;
@@ -105,6 +103,17 @@ struct exact_rkn_tableau {
     }
     reduce(p, 2 * stages - 2);
     for (int i = 0; i < stages; ++i) r[i] = p[i];
+    return r;
+  }
+  /// The product u * c with the vector of nodes: in the monomial basis x u mod N, a shift and
+  /// one reduction step (O(s) instead of the O(s^2) general product).
+  constexpr stage_vector multiply_by_nodes(const stage_vector& u) const {
+    if (basis == stage_basis::values) return multiply(u, c);
+    stage_vector r;
+    for (int i = stages - 1; i >= 1; --i) r[i] = u[i - 1];
+    const exact_number& top = u[stages - 1];  // x^s = -(n_0 + ... + n_{s-1} x^{s-1}) mod N
+    if (!top.num.is_zero())
+      for (int i = 0; i < stages; ++i) r[i] = r[i] - top * node_polynomial[i];
     return r;
   }
   /// p (degree <= top) modulo the monic N, in place: p[0..s-1] hold the remainder.
@@ -503,12 +512,12 @@ struct numeric_rkn_tableau {
 namespace detail {
 template <class T>
 T to_scalar(const exact_number& x) {
-  return T(x.num.str()) / T(x.den.str());
+  return T(x.num.str()) / T(x.den().str());
 }
 template <class T>
   requires std::is_floating_point_v<T>
 T to_scalar(const exact_number& x) {
-  return static_cast<T>(std::stold(x.num.str())) / static_cast<T>(std::stold(x.den.str()));
+  return static_cast<T>(std::stold(x.num.str())) / static_cast<T>(std::stold(x.den().str()));
 }
 }  // namespace detail
 
