@@ -6,7 +6,8 @@
 ///   double.csv     the planar double pendulum in Cartesian coordinates (two rods, constrained
 ///                  LPF) and in angles (unconstrained LPF), positions side by side.
 /// Usage: geomint-constraints-demo OUT_DIR [--circle-steps N]
-#include <geomint/schemes/constrained_lpf.hpp>
+#include <geomint/constrained_integrator.hpp>
+#include <geomint/integrator.hpp>
 #include <geomint/mechanics/constrained_systems.hpp>
 #include <geomint/schemes/paper23.hpp>
 

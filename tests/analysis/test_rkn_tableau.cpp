@@ -140,7 +140,7 @@ T node_polynomial_residual(const exact_rkn_tableau& t) {
   T worst(0);
   for (int i = 1; i < M; ++i) {
     T value(0);
-    for (int k = t.stages; k >= 0; --k) value = value * c[static_cast<std::size_t>(i)] + detail::to_scalar<T>(t.node_polynomial[k]);
+    for (int k = t.stages; k >= 0; --k) value = value * c[static_cast<std::size_t>(i)] + T(t.node_polynomial[k].num.str()) / T(t.node_polynomial[k].den().str());
     worst = std::max(worst, T(abs(value)));
   }
   return worst;

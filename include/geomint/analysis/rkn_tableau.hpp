@@ -50,10 +50,10 @@ inline constexpr int exact_algebra_limbs = 16;
 /// The exact numbers of the scheme algebra.
 using exact_number = big_rational<exact_algebra_limbs>;
 
-namespace detail {
+namespace analysis::detail {
 /// n / d as an exact number.
 constexpr exact_number fraction(std::int64_t n, std::int64_t d) { return exact_number(rational(n, d)); }
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// How stage vectors are represented.
 enum class stage_basis {
@@ -152,7 +152,7 @@ struct exact_rkn_tableau {
   friend constexpr bool operator==(const exact_rkn_tableau&, const exact_rkn_tableau&) = default;
 };
 
-namespace detail {
+namespace analysis::detail {
 
 /// Polynomial coefficients (ascending) of up to degree 2 max_exact_stages + 2.
 struct exact_poly_buffer {
@@ -169,11 +169,11 @@ constexpr exact_rkn_tableau collocation_tableau(const exact_number* monic_n, int
   for (int k = 0; k < s; ++k) {
     // x^k -> int_0^x (x - u) u^k du = x^{k+2} / ((k+1)(k+2)), reduced modulo N.
     exact_number p[2 * max_exact_stages + 2];
-    p[k + 2] = detail::fraction(1, (k + 1) * (k + 2));
+    p[k + 2] = analysis::detail::fraction(1, (k + 1) * (k + 2));
     t.reduce(p, k + 2);
     for (int i = 0; i < s; ++i) t.a[i][k] = p[i];
-    t.b[k] = detail::fraction(1, k + 1);
-    t.bbar[k] = detail::fraction(1, (k + 1) * (k + 2));
+    t.b[k] = analysis::detail::fraction(1, k + 1);
+    t.bbar[k] = analysis::detail::fraction(1, (k + 1) * (k + 2));
   }
   t.one[0] = exact_number(1);
   if (s == 1) {
@@ -194,10 +194,10 @@ constexpr exact_rkn_tableau galerkin_tableau(const exact_number* monic_n, int s)
   exact_number rk[max_exact_stages][max_exact_stages];
   for (int k = 0; k < s; ++k) {
     exact_number p[2 * max_exact_stages + 2];
-    p[k + 1] = detail::fraction(1, k + 1);
+    p[k + 1] = analysis::detail::fraction(1, k + 1);
     t.reduce(p, k + 1);
     for (int i = 0; i < s; ++i) rk[i][k] = p[i];
-    t.b[k] = detail::fraction(1, k + 1);
+    t.b[k] = analysis::detail::fraction(1, k + 1);
   }
   for (int i = 0; i < s; ++i)
     for (int j = 0; j < s; ++j) {
@@ -290,7 +290,7 @@ constexpr exact_poly_buffer interior_node_polynomial() {
   return p;
 }
 
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// The exact RKN tableau of LPF of degree m on a node family (collocation on the interior nodes).
 template <int M, class Family = equispaced>
@@ -299,8 +299,8 @@ constexpr exact_rkn_tableau lpf_tableau() {
                 "geomint::lpf_tableau: Family must be equispaced, gauss_lobatto, chebyshev_lobatto or gauss_interior");
   static_assert(M >= 2 && M <= max_exact_m, "geomint::lpf_tableau: m must be in 2..8");
   if constexpr (node_family<Family> && M >= 2 && M <= max_exact_m) {
-    const auto n = detail::interior_node_polynomial<Family, M>();
-    return detail::collocation_tableau(n.c, M - 1);
+    const auto n = analysis::detail::interior_node_polynomial<Family, M>();
+    return analysis::detail::collocation_tableau(n.c, M - 1);
   } else {
     return {};
   }
@@ -311,10 +311,10 @@ template <int M>
 constexpr exact_rkn_tableau galerkin_tableau() {
   static_assert(M >= 1 && M <= max_exact_stages, "geomint::galerkin_tableau: m must be in 1..8");
   if constexpr (M >= 1 && M <= max_exact_stages) {
-    detail::exact_poly_buffer n;
-    detail::shifted_orthogonal(detail::orthogonal_kind::legendre, M, n.c);
-    detail::make_monic(n.c, M);
-    return detail::galerkin_tableau(n.c, M);
+    analysis::detail::exact_poly_buffer n;
+    analysis::detail::shifted_orthogonal(analysis::detail::orthogonal_kind::legendre, M, n.c);
+    analysis::detail::make_monic(n.c, M);
+    return analysis::detail::galerkin_tableau(n.c, M);
   } else {
     return {};
   }
@@ -365,7 +365,7 @@ constexpr exact_rkn_tableau trapezoidal_tableau() {
                                  {rational(1, 2), rational(0)}, {rational(1, 2), rational(1, 2)});
 }
 
-namespace detail {
+namespace analysis::detail {
 
 /// Sign (-1, 0, 1) of the polynomial p (ascending, degree deg) at x = 0 and x = 1.
 constexpr int sign_at(const exact_number* p, int deg, bool at_one) {
@@ -423,7 +423,7 @@ constexpr int roots_in_unit_interval(const exact_number* p, int deg) {
   return 1 + sturm_roots_in_half_open_unit_interval(p + 1, deg - 1);
 }
 
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// Collocation (LPF-type) tableau on user data: the s distinct rational interior nodes in [0, 1].
 template <class NodeEntry, std::size_t S>
@@ -432,7 +432,7 @@ constexpr exact_rkn_tableau collocation_tableau_from_nodes(const std::array<Node
                 "geomint::collocation_tableau_from_nodes: the nodes must be exact geomint::rational (floating-point "
                 "nodes are not exact; for irrational nodes pass their node polynomial)");
   static_assert(S >= 1 && S <= max_exact_stages, "geomint::collocation_tableau_from_nodes: 1..8 nodes");
-  detail::exact_poly_buffer p;
+  analysis::detail::exact_poly_buffer p;
   p.c[0] = exact_number(1);
   for (std::size_t i = 0; i < S; ++i) {
     if (nodes[i] < rational(0) || nodes[i] > rational(1))
@@ -442,7 +442,7 @@ constexpr exact_rkn_tableau collocation_tableau_from_nodes(const std::array<Node
     const exact_number root(nodes[i]);
     for (int k = static_cast<int>(i) + 1; k >= 0; --k) p.c[k] = (k >= 1 ? p.c[k - 1] : exact_number(0)) - root * p.c[k];
   }
-  return detail::collocation_tableau(p.c, static_cast<int>(S));
+  return analysis::detail::collocation_tableau(p.c, static_cast<int>(S));
 }
 /// The same with the number of nodes given, for braced lists: `collocation_tableau_from_nodes<3>({...})`.
 template <int S>
@@ -462,12 +462,12 @@ constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array
                 "geomint::collocation_tableau_from_polynomial: the node polynomial must have degree 1..8 (pass degree + 1 "
                 "coefficients, ascending powers)");
   constexpr int S = static_cast<int>(K) - 1;
-  detail::exact_poly_buffer p;
+  analysis::detail::exact_poly_buffer p;
   for (int k = 0; k <= S; ++k) p.c[k] = exact_number(coefficients[static_cast<std::size_t>(k)]);
   if (p.c[S].num.is_zero())
     throw std::domain_error("geomint::collocation_tableau_from_polynomial: the leading coefficient is zero (the degree is "
                             "the number of coefficients minus one)");
-  detail::make_monic(p.c, S);
+  analysis::detail::make_monic(p.c, S);
   // Simple roots: the Euclidean remainder sequence of N and N' ends in a nonzero constant.
   exact_number u[max_exact_stages + 1], w[max_exact_stages + 1];
   int du = S, dw = S - 1;
@@ -490,9 +490,9 @@ constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array
     du = dw;
     dw = t;
   }
-  if (detail::roots_in_unit_interval(p.c, S) != S)
+  if (analysis::detail::roots_in_unit_interval(p.c, S) != S)
     throw std::domain_error("geomint::collocation_tableau_from_polynomial: the roots must be real and lie in [0, 1]");
-  return detail::collocation_tableau(p.c, S);
+  return analysis::detail::collocation_tableau(p.c, S);
 }
 /// The same with the degree given, for braced lists: `collocation_tableau_from_polynomial<2>({...})`.
 template <int S>
@@ -509,7 +509,7 @@ struct numeric_rkn_tableau {
   std::array<T, max_exact_stages> bbar{}, b{};
 };
 
-namespace detail {
+namespace analysis::detail {
 template <class T>
 T to_scalar(const exact_number& x) {
   return T(x.num.str()) / T(x.den().str());
@@ -519,7 +519,7 @@ template <class T>
 T to_scalar(const exact_number& x) {
   return static_cast<T>(std::stold(x.num.str())) / static_cast<T>(std::stold(x.den().str()));
 }
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// Values-basis tableau from the exact one: for the monomial basis, with V_ik = c_i^k at the
 /// numerically computed nodes c (ascending), a = V A V^{-1}, bbar = bbar V^{-1}, b = b V^{-1}.
@@ -531,13 +531,13 @@ numeric_rkn_tableau<T> numeric_tableau(const exact_rkn_tableau& t, const T* node
   out.stages = s;
   T A[max_exact_stages][max_exact_stages], bb[max_exact_stages], b[max_exact_stages];
   for (int i = 0; i < s; ++i) {
-    for (int j = 0; j < s; ++j) A[i][j] = detail::to_scalar<T>(t.a[i][j]);
-    bb[i] = detail::to_scalar<T>(t.bbar[i]);
-    b[i] = detail::to_scalar<T>(t.b[i]);
+    for (int j = 0; j < s; ++j) A[i][j] = analysis::detail::to_scalar<T>(t.a[i][j]);
+    bb[i] = analysis::detail::to_scalar<T>(t.bbar[i]);
+    b[i] = analysis::detail::to_scalar<T>(t.b[i]);
   }
   if (t.basis == stage_basis::values) {
     for (int i = 0; i < s; ++i) {
-      out.c[static_cast<std::size_t>(i)] = detail::to_scalar<T>(t.c[i]);
+      out.c[static_cast<std::size_t>(i)] = analysis::detail::to_scalar<T>(t.c[i]);
       out.bbar[static_cast<std::size_t>(i)] = bb[i];
       out.b[static_cast<std::size_t>(i)] = b[i];
       for (int j = 0; j < s; ++j) out.a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = A[i][j];

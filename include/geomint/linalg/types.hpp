@@ -12,8 +12,9 @@ template <class S, int N>
 using vec = Eigen::Matrix<S, N, 1>;
 template <class S, int N>
 using mat = Eigen::Matrix<S, N, N>;
-
-namespace detail {
+/// A vector whose size is known at run time only (type-erased steppers, studies).
+template <class S>
+using dynamic_vector = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 
 template <class T>
 bool is_finite(const T& x) {
@@ -28,5 +29,4 @@ bool all_finite(const Eigen::MatrixBase<Derived>& m) {
   return true;
 }
 
-}  // namespace detail
 }  // namespace geomint
