@@ -26,5 +26,5 @@ for part in lpf constraints analysis schemes beam; do
   fi
 done
 echo "=== results: the generated blocks of docs/results refreshed from $out ==="
-/usr/bin/python3 scripts/render_results.py "$out" docs/results/lpf.md docs/results/constraints.md docs/results/beam.md
+/usr/bin/python3 scripts/render_results.py "$out" README.md docs/results/lpf.md docs/results/constraints.md docs/results/beam.md
 echo "=== geomint demonstration finished: figures and CSV under $out ==="

@@ -57,4 +57,22 @@ cmake --build "$build" --target geomint-lagrangian-classes > /dev/null
   echo "|---|---|---|---|"
   tail -n +2 "$out/schemes/lagrangian_classes.csv" | awk -F, '{printf "| %s | %s | %s | %s |\n", $1,$2,$3,$4}'
 } >> docs/results/schemes.md
+# The compact form of the same table for the README (refreshed there by scripts/render_results.py):
+# order p per scheme and m, with S = symplectic and R = symmetric (reversible), exactly.
+/usr/bin/python3 - "$out/schemes/analysis.csv" > "$out/schemes/summary.txt" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+def cell(r):
+    return r["order"] + ("S" if r["symplectic"] == "yes" else "") + ("R" if r["symmetric"] == "yes" else "")
+ms = sorted({int(r["m"]) for r in rows if r["m"] not in ("", "-")})
+print("order p (S symplectic, R symmetric)  " + "".join(f"m={m:<6}" for m in ms))
+labels = [("lpf", f) for f in ("equispaced", "gauss-interior", "lobatto", "chebyshev")] + [("galerkin", "gauss")]
+for scheme, nodes in labels:
+    by_m = {int(r["m"]): cell(r) for r in rows if r["scheme"] == scheme and r["nodes"] == nodes}
+    name = f"{scheme} {nodes}" if scheme == "lpf" else "galerkin (Gauss quadrature)"
+    print(f"{name:<37}" + "".join(f"{by_m.get(m, '-'):<8}" for m in ms))
+for r in rows:
+    if r["scheme"] in ("midpoint", "trapezoidal"):
+        print(f"{r['scheme']:<37}{cell(r)}")
+PY
 echo "schemes: exact order / symplecticity / symmetry / stability table -> docs/results/schemes.md"
