@@ -7,6 +7,7 @@
 ///   I.step(s);                              // (q_k, p_k) -> (q_{k+1}, p_{k+1}); throws integration_error
 ///   auto [x0, x1] = I.start(q0, qdot0);     // consistent start of the two-step form
 ///   auto x2 = I.two_step(x0, x1);           // (x^{k-1}, x^k) -> x^{k+1} (eq. 11-12; schemes 16-22)
+///   auto path = I.step_with_path(s);        // one step and its path: path.position(t), path.velocity(t)
 
 #include <type_traits>
 #include <utility>
@@ -14,6 +15,7 @@
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/lpf.hpp"
 #include "geomint/schemes/paper_schemes.hpp"
+#include "geomint/schemes/step_path.hpp"
 #include "geomint/solvers/step_monitor.hpp"
 
 namespace geomint {
@@ -82,6 +84,8 @@ class integrator {
   using system = Sys;
   using vector = vec<T, n>;
   using state = phase_state<T, n>;
+  /// The dense output of one step (step_path; void for a scheme without a polynomial path).
+  using path = typename scheme_path<Scheme, T, n>::type;
 
   /// tau is checked at every step (an invalid tau is reported with the step index).
   /// The Newton options are validated here (std::invalid_argument for max_iterations < 1 etc.).
@@ -129,11 +133,43 @@ class integrator {
   }
 
   /// One step of the one-step form without throwing; on failure s is unchanged.
-  step_status try_step(state& s) const {
+  step_status try_step(state& s) const { return try_step_impl(s, static_cast<no_path*>(nullptr)); }
+  /// One step; throws integration_error (reason and step index) on failure.
+  void step(state& s) const {
+    const step_status st = try_step(s);
+    if (!st) throw integration_error(st);
+  }
+
+  /// Dense output: one step (as `step`) that also returns the polynomial path it fitted on
+  /// [t_k, t_{k+1}], to evaluate x(t) and xdot(t) anywhere in the step (schemes/step_path.hpp;
+  /// its accuracy is documented there). For midpoint_vi and trapezoidal_vi the path is the
+  /// straight segment (linear interpolation).
+  auto step_with_path(state& s) const
+    requires scheme_with_path<Scheme>
+  {
+    path out;
+    const step_status st = try_step_impl(s, &out);
+    if (!st) throw integration_error(st);
+    return out;
+  }
+  /// As step_with_path without throwing: on failure s and `out` are unchanged.
+  template <class Path>
+    requires(scheme_with_path<Scheme> && std::is_same_v<Path, path>)
+  step_status try_step_with_path(state& s, Path& out) const {
+    return try_step_impl(s, &out);
+  }
+
+ private:
+  struct no_path {};
+  template <class Path>
+  step_status try_step_impl(state& s, Path* path) const {
     step_status st = check(s.step, s.q, s.p);
     if (!st) return st;
     vector q1 = vector::Zero(), p1 = vector::Zero();
-    st = engine_.one_step(s.q, s.p, tau_, q1, p1, opt_);
+    using engine_type = typename Scheme::template engine<Sys, T>;
+    typename engine_type::unknowns z;
+    constexpr bool with_path = !std::is_same_v<Path, no_path>;
+    st = engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, with_path ? &z : nullptr);
     st.step = s.step;
     if (!st) return st;
     if (!detail::all_finite(q1) || !detail::all_finite(p1)) {
@@ -144,14 +180,18 @@ class integrator {
       monitor_.check(energy(s.q, s.p), energy(q1, p1), st);
       if (!st) return st;
     }
-    detail::commit_step(s, q1, p1, tau_);
+    if constexpr (with_path) {
+      const vector q0 = s.q;
+      const T t0 = s.t;
+      detail::commit_step(s, q1, p1, tau_);
+      *path = Path(t0, s.t, tau_, engine_.method().path(q0, z));
+    } else {
+      detail::commit_step(s, q1, p1, tau_);
+    }
     return st;
   }
-  /// One step; throws integration_error (reason and step index) on failure.
-  void step(state& s) const {
-    const step_status st = try_step(s);
-    if (!st) throw integration_error(st);
-  }
+
+ public:
   /// `count` steps; throws on the first failure.
   void advance(state& s, long count) const {
     for (long i = 0; i < count; ++i) step(s);
