@@ -6,11 +6,12 @@
 /// paper eq. 8 or 13 for the basis phi_j). `step_path` keeps the control points X_0..X_m and
 /// evaluates x(t) and xdot(t) = sum_j phi_j'(s) X_j / tau for t in [t_k, t_{k+1}].
 ///
-/// Accuracy (docs/guide/your_own_system.md, "Dense output"): the path's second derivative is the
-/// degree-(m-2) interpolant of the acceleration at the m-1 interior nodes, so the local error
-/// of x(t) inside a step is O(tau^(m+1)) and that of xdot(t) is O(tau^m); globally the dense
-/// output has order min(m+1, p) in position and min(m, p) in velocity, where p is the order
-/// of the scheme at the nodes (2(m-1) for LPF on Gauss nodes, 2m for Galerkin). For the
+/// Accuracy (docs/guide/your_own_system.md, "Dense output"): for LPF the path's second
+/// derivative is the degree-(m-2) interpolant of the acceleration at the m-1 interior nodes, so
+/// the local error of x(t) inside a step is O(tau^(m+1)) and that of xdot(t) is O(tau^m);
+/// globally the dense output has order min(m+1, p) in position and min(m, p) in velocity, where
+/// p is the order of the scheme at the nodes (2(m-1) for LPF on Gauss nodes). The same orders
+/// are measured for Galerkin (p = 2m). For the
 /// midpoint and trapezoidal rules (m = 1) the path is the straight segment between q_k and
 /// q_{k+1}: linear interpolation, order 2 in position and a constant secant velocity (order 1).
 
