@@ -123,6 +123,8 @@ TEMPLATE_LIST_TEST_CASE("dense output: measured order against the derived one", 
   check_dense_order<lpf_gauss<4>, T>(5, 4, 6);
   // LPF on Gauss nodes, m = 2: nodes 2; position min(3, 2) = 2, velocity min(2, 2) = 2.
   check_dense_order<lpf_gauss<2>, T>(2, 2, 2);
+  // The same path in the Bernstein basis (Bezier control points, eq. 13), m = 2 equispaced.
+  check_dense_order<lpf<2, equispaced, bernstein>, T>(2, 2, 2);
   // Galerkin m = 3 (order 2m = 6 at the nodes): position 4, velocity 3.
   check_dense_order<galerkin_vi<3>, T>(4, 3, 6);
   // Midpoint: linear interpolation of order-2 nodes: position 2, the secant velocity 1.
