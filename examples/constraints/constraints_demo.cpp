@@ -6,6 +6,7 @@
 ///   double.csv     the planar double pendulum in Cartesian coordinates (two rods, constrained
 ///                  LPF) and in angles (unconstrained LPF), positions side by side.
 /// Usage: geomint-constraints-demo OUT_DIR [--circle-steps N]
+#include <geomint/core/multiprecision.hpp>  // Boost.Multiprecision scalars (included after geomint below)
 #include <geomint/schemes/constrained_lpf.hpp>
 #include <geomint/mechanics/constrained_systems.hpp>
 #include <geomint/schemes/paper23.hpp>

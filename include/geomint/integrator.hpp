@@ -74,6 +74,10 @@ constexpr int dof_or_one() {
 
 template <class Scheme, class Sys, class T>
 class integrator {
+  static_assert(eigen_scalar_ready<T>::value,
+                "geomint::integrator: T is a Boost.Multiprecision number but its Eigen traits are not included: "
+                "#include <geomint/core/multiprecision.hpp> (or <geomint/geomint.hpp>, or a Boost.Multiprecision "
+                "header before geomint's headers)");
   static_assert(checked_system<Sys, T>, "geomint::integrator: Sys does not satisfy the system contract (see above)");
   static_assert(!detail::is_dual<T>::value, "geomint::integrator: T is the working scalar (double, a Boost.Multiprecision type), not a dual");
 

@@ -6,9 +6,20 @@
 /// positive_real_hypot names (it is used by the Givens rotations of the eigen-solvers and the
 /// stable norms). Where those members are missing, hypot_impl for Boost numbers is routed to
 /// Boost's own hypot; where a newer Boost provides them, this specialisation drops out.
+///
+/// Include this header (or geomint/geomint.hpp, or any Boost.Multiprecision header before
+/// geomint's own headers) to use Boost.Multiprecision scalars with geomint.
 #include <Eigen/Core>
 #include <boost/multiprecision/eigen.hpp>
 #include <boost/multiprecision/number.hpp>
+
+#include "geomint/linalg/types.hpp"
+
+namespace geomint {
+/// Eigen has the traits of every Boost.Multiprecision number from here on (linalg/types.hpp).
+template <class Backend, boost::multiprecision::expression_template_option ET>
+struct eigen_scalar_ready<boost::multiprecision::number<Backend, ET>> : std::true_type {};
+}  // namespace geomint
 
 namespace geomint::detail {
 template <class Traits>
