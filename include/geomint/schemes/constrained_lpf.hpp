@@ -83,6 +83,13 @@ class constrained_lpf_method {
     return st;
   }
 
+  /// The control points X_0..X_m of the path fitted on the step from q_k with unknowns z.
+  controls path(const V& q, const Z& z) const {
+    controls X = unpack_path<T, n, M, unknowns>(z);
+    for (int j = 0; j <= M; ++j) X.col(j) += q;
+    return X;
+  }
+
   /// The two-step form (x^{k-1}, x^k) -> x^{k+1}: momentum at t_k from the constrained path on
   /// [t_{k-1}, t_k], then the forward solve with or without eq. (5)'s end terms.
   step_status two_step(const V& x_prev, const V& x_curr, const T& tau, endpoint_terms ends, V& x_next,
@@ -253,6 +260,8 @@ struct constrained_lpf {
                 "geomint::constrained_lpf: Family must be equispaced, gauss_lobatto, chebyshev_lobatto or gauss_interior");
   static_assert(basis_kind<Basis>, "geomint::constrained_lpf: Basis must be lagrange or bernstein");
   static constexpr int m = M;
+  using family = Family;
+  using basis = Basis;
   static std::string name() {
     return "constrained-lpf(m=" + std::to_string(M) + ", " + std::string(Family::name) + ", " +
            std::string(Basis::name) + ")";
@@ -350,12 +359,31 @@ class constrained_integrator {
     return s;
   }
 
+  /// Dense output of one step: the path fitted on [t_k, t_{k+1}] (schemes/step_path.hpp). It
+  /// meets the constraints at the nodes where the scheme imposes them, not in between, and its
+  /// end velocity is the one before the momentum projection.
+  using path = step_path<T, n, Scheme::m, typename Scheme::family, typename Scheme::basis>;
+
   /// One step without throwing; on failure s is unchanged.
-  step_status try_step(state& s) const {
+  step_status try_step(state& s) const { return try_step_impl(s, static_cast<path*>(nullptr)); }
+  /// One step and its path (see `path`); throws integration_error on failure.
+  path step_with_path(state& s) const {
+    path out;
+    const step_status st = try_step_impl(s, &out);
+    if (!st) throw integration_error(st);
+    return out;
+  }
+  /// As step_with_path without throwing: on failure s and `out` are unchanged.
+  step_status try_step_with_path(state& s, path& out) const { return try_step_impl(s, &out); }
+
+ private:
+  /// The step; `out` (if not null) receives its path.
+  step_status try_step_impl(state& s, path* out) const {
     step_status st = detail::check_step_input(s.step, tau_, s.q, s.p);
     if (!st) return st;
     vector q1, p1;
-    st = engine_.one_step(s.q, s.p, tau_, q1, p1, opt_);
+    typename Scheme::template engine<Sys, Con, T>::unknowns z;
+    st = engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, out ? &z : nullptr);
     st.step = s.step;
     if (!st) return st;
     if (!detail::all_finite(q1) || !detail::all_finite(p1)) {
@@ -369,9 +397,14 @@ class constrained_integrator {
       monitor_.check(energy(s), energy(next), st);
       if (!st) return st;
     }
+    const vector q0 = s.q;
+    const T t0 = s.t;
     detail::commit_step(s, q1, p1, tau_);
+    if (out) *out = path(t0, s.t, tau_, engine_.method().path(q0, z));
     return st;
   }
+
+ public:
   /// One step; throws integration_error (reason and step index) on failure.
   void step(state& s) const {
     const step_status st = try_step(s);

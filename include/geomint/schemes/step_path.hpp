@@ -88,7 +88,8 @@ class step_path {
   bool valid_ = false;
 };
 
-/// Schemes whose steps fit a polynomial path (lpf, galerkin_vi, midpoint_vi, trapezoidal_vi):
+/// Schemes whose steps fit a polynomial path (lpf, galerkin_vi, midpoint_vi, trapezoidal_vi,
+/// constrained_lpf):
 /// they name its degree m, node family and basis.
 template <class Scheme>
 concept scheme_with_path = requires {
