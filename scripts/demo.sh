@@ -25,4 +25,6 @@ for part in lpf constraints analysis schemes beam; do
     bash "scripts/demo_$part.sh" "$build" "$out"
   fi
 done
+echo "=== results: the generated blocks of docs/results refreshed from $out ==="
+/usr/bin/python3 scripts/render_results.py "$out" docs/results/lpf.md docs/results/constraints.md docs/results/beam.md
 echo "=== geomint demonstration finished: figures and CSV under $out ==="

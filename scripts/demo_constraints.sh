@@ -9,6 +9,6 @@ exe="$1/examples/constraints/geomint-constraints-demo"
 out="$2/constraints"
 [ -x "$exe" ] || { echo "demo_constraints.sh: $exe not found; build first" >&2; exit 1; }
 mkdir -p "$out"
-"$exe" "$out"
+"$exe" "$out" | tee "$out/summary.txt"
 /usr/bin/python3 "$root/tools/plot_constraints.py" "$out" "$out"
 echo "constraints: CSV and PNG in $out"

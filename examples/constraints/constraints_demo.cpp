@@ -7,7 +7,8 @@
 ///                  LPF) and in angles (unconstrained LPF), positions side by side.
 /// Usage: geomint-constraints-demo OUT_DIR [--circle-steps N]
 #include <geomint/core/multiprecision.hpp>  // Boost.Multiprecision scalars (included after geomint below)
-#include <geomint/schemes/constrained_lpf.hpp>
+#include <geomint/constrained_integrator.hpp>
+#include <geomint/integrator.hpp>
 #include <geomint/mechanics/constrained_systems.hpp>
 #include <geomint/schemes/paper23.hpp>
 

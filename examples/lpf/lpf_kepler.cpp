@@ -24,7 +24,9 @@ template <class Scheme>
 series run(const std::string& name, long steps, long every) {
   const T tau = T(1) / T(100);
   integrator<Scheme, systems::kepler, T> I(systems::kepler{}, tau);
-  auto s = I.initial_state(V(T(1) / T(2), T(0)), V(T(0), std::sqrt(T(3))));
+  V q0, qdot0;
+  systems::kepler::initial_data(q0, qdot0);  // e = 1/2 at pericentre
+  auto s = I.initial_state(q0, qdot0);
   const T E0 = I.energy(s), J0 = systems::kepler::conserved<T>(s.q, s.p);
   series r;
   r.name = name;

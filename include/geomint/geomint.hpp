@@ -1,38 +1,55 @@
 #pragma once
 /// Umbrella header: every public header of geomint, module by module (docs/design.md).
 
-// core: exact arithmetic, polynomials, nodes, bases, differentiation weights
+// core: exact arithmetic, polynomials, nodes, bases, differentiation weights, quadrature
 #include "geomint/core/rational.hpp"
+#include "geomint/core/big_integer.hpp"
+#include "geomint/core/big_rational.hpp"
 #include "geomint/core/polynomial.hpp"
+#include "geomint/core/integer_polynomial.hpp"
 #include "geomint/core/nodes.hpp"
 #include "geomint/core/basis.hpp"
 #include "geomint/core/differentiation.hpp"
+#include "geomint/core/quadrature.hpp"
 #include "geomint/core/multiprecision.hpp"
-// ad, linalg, solvers: forward-mode AD, small dense linear algebra, Newton
+// ad, linalg, solvers: forward-mode AD, small dense linear algebra, Newton, the step contract
 #include "geomint/ad/dual.hpp"
 #include "geomint/linalg/types.hpp"
 #include "geomint/linalg/lu_small.hpp"
 #include "geomint/solvers/newton.hpp"
-// mechanics: system concepts, Lagrangian derivatives, constraints, built-in systems
+#include "geomint/solvers/step_status.hpp"
+#include "geomint/solvers/step_monitor.hpp"
+#include "geomint/solvers/phase_state.hpp"
+// mechanics: the system contract, Lagrangian derivatives, built-in systems and constraints
 #include "geomint/mechanics/lagrangian.hpp"
 #include "geomint/mechanics/constraint.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/mechanics/constrained_systems.hpp"
 #include "geomint/mechanics/zoo.hpp"
-// schemes and the integrators built on them
+// schemes: the step skeleton and the methods (LPF, Galerkin, midpoint, trapezoidal, constrained LPF)
+#include "geomint/schemes/step_skeleton.hpp"
 #include "geomint/schemes/lpf.hpp"
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/constrained_lpf.hpp"
 #include "geomint/schemes/paper_schemes.hpp"
 #include "geomint/schemes/paper23.hpp"
+// the integrators: one contract for free and constrained systems
 #include "geomint/integrator.hpp"
-// Lie groups and the geometrically exact beam
+#include "geomint/constrained_integrator.hpp"
+// lie groups and the geometrically exact beam
 #include "geomint/lie/so3.hpp"
 #include "geomint/lie/se3.hpp"
 #include "geomint/beam/beam.hpp"
-// exact and numerical analysis of the schemes
+// analysis: exact scheme algebra, reference flows, order and symplecticity studies
 #include "geomint/analysis/exact_scheme.hpp"
+#include "geomint/analysis/rkn_tableau.hpp"
+#include "geomint/analysis/nystrom_trees.hpp"
+#include "geomint/analysis/order_conditions.hpp"
+#include "geomint/analysis/scheme_structure.hpp"
+#include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/closed_form_flows.hpp"
 #include "geomint/analysis/reference_flow.hpp"
 #include "geomint/analysis/order_study.hpp"
 #include "geomint/analysis/symplecticity.hpp"
 #include "geomint/analysis/any_system.hpp"
+#include "geomint/analysis/composition.hpp"

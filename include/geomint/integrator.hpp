@@ -16,61 +16,9 @@
 #include "geomint/schemes/lpf.hpp"
 #include "geomint/schemes/paper_schemes.hpp"
 #include "geomint/schemes/step_path.hpp"
-#include "geomint/solvers/step_monitor.hpp"
+#include "geomint/solvers/phase_state.hpp"
 
 namespace geomint {
-
-/// A point of the one-step (position-momentum) form.
-///
-/// Time is never accumulated: t_k = t0 + (k - k0) tau, where (k0, t0) is the step and time at
-/// which the current step size tau0 was first used, so 10^7 steps of tau = 1/10 end at exactly
-/// the nearest scalar to 10^6. Set `t` (and `step`) before the first step to start elsewhere.
-template <class T, int n>
-struct phase_state {
-  long step = 0;  ///< k
-  T t = T(0);     ///< t_k
-  vec<T, n> q = vec<T, n>::Zero();
-  vec<T, n> p = vec<T, n>::Zero();
-  long k0 = 0;    ///< the step at which tau0 was first used
-  T t0 = T(0);    ///< t_{k0}
-  T tau0 = T(0);  ///< the step size in use since k0 (0 before the first step)
-};
-
-namespace detail {
-
-/// Commits a successful step to s: (q_{k+1}, p_{k+1}), k + 1 and t_{k+1} = t0 + (k + 1 - k0) tau.
-template <class T, int n>
-void commit_step(phase_state<T, n>& s, const vec<T, n>& q1, const vec<T, n>& p1, const T& tau) {
-  if (!(s.tau0 == tau)) {
-    s.k0 = s.step;
-    s.t0 = s.t;
-    s.tau0 = tau;
-  }
-  s.q = q1;
-  s.p = p1;
-  ++s.step;
-  s.t = s.t0 + T(s.step - s.k0) * tau;
-}
-
-/// The checks before a step: tau finite and > 0, the state finite.
-template <class T, class A, class B>
-step_status check_step_input(long k, const T& tau, const A& a, const B& b) {
-  step_status st;
-  st.step = k;
-  if (!is_finite(tau) || !(tau > T(0)))
-    st.reason = step_failure::invalid_step_size;
-  else if (!all_finite(a) || !all_finite(b))
-    st.reason = step_failure::non_finite_input;
-  return st;
-}
-
-/// Sys::dof, or 1 where the contract check has already failed (fewer follow-on errors).
-template <class Sys>
-constexpr int dof_or_one() {
-  if constexpr (has_dof<Sys>) return Sys::dof >= 1 ? Sys::dof : 1;
-  else return 1;
-}
-}  // namespace detail
 
 template <class Scheme, class Sys, class T>
 class integrator {
@@ -79,10 +27,10 @@ class integrator {
                 "#include <geomint/core/multiprecision.hpp> (or <geomint/geomint.hpp>, or a Boost.Multiprecision "
                 "header before geomint's headers)");
   static_assert(checked_system<Sys, T>, "geomint::integrator: Sys does not satisfy the system contract (see above)");
-  static_assert(!detail::is_dual<T>::value, "geomint::integrator: T is the working scalar (double, a Boost.Multiprecision type), not a dual");
+  static_assert(!is_dual<T>::value, "geomint::integrator: T is the working scalar (double, a Boost.Multiprecision type), not a dual");
 
  public:
-  static constexpr int n = detail::dof_or_one<Sys>();
+  static constexpr int n = contract_dof<Sys>();
   using scalar = T;
   using scheme = Scheme;
   using system = Sys;
@@ -137,11 +85,21 @@ class integrator {
   }
 
   /// One step of the one-step form without throwing; on failure s is unchanged.
-  step_status try_step(state& s) const { return try_step_impl(s, static_cast<no_path*>(nullptr)); }
+  step_status try_step(state& s) const {
+    const step_status st = check_step_input(s.step, tau_, s.q, s.p);
+    if (!st) return st;
+    vector q1 = vector::Zero(), p1 = vector::Zero();
+    return finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_), q1, p1, tau_, monitor_,
+                       [this](const vector& q, const vector& p) { return energy(q, p); });
+  }
   /// One step; throws integration_error (reason and step index) on failure.
   void step(state& s) const {
     const step_status st = try_step(s);
     if (!st) throw integration_error(st);
+  }
+  /// `count` steps; throws on the first failure.
+  void advance(state& s, long count) const {
+    for (long i = 0; i < count; ++i) step(s);
   }
 
   /// Dense output: one step (as `step`) that also returns the polynomial path it fitted on
@@ -152,7 +110,7 @@ class integrator {
     requires scheme_with_path<Scheme>
   {
     path out;
-    const step_status st = try_step_impl(s, &out);
+    const step_status st = try_step_with_path(s, out);
     if (!st) throw integration_error(st);
     return out;
   }
@@ -160,45 +118,16 @@ class integrator {
   template <class Path>
     requires(scheme_with_path<Scheme> && std::is_same_v<Path, path>)
   step_status try_step_with_path(state& s, Path& out) const {
-    return try_step_impl(s, &out);
-  }
-
- private:
-  struct no_path {};
-  template <class Path>
-  step_status try_step_impl(state& s, Path* path) const {
-    step_status st = check(s.step, s.q, s.p);
-    if (!st) return st;
+    const step_status in = check_step_input(s.step, tau_, s.q, s.p);
+    if (!in) return in;
     vector q1 = vector::Zero(), p1 = vector::Zero();
-    using engine_type = typename Scheme::template engine<Sys, T>;
-    typename engine_type::unknowns z;
-    constexpr bool with_path = !std::is_same_v<Path, no_path>;
-    st = engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, with_path ? &z : nullptr);
-    st.step = s.step;
-    if (!st) return st;
-    if (!detail::all_finite(q1) || !detail::all_finite(p1)) {
-      st.reason = step_failure::non_finite_iterate;
-      return st;
-    }
-    if (monitor_.enabled) {
-      monitor_.check(energy(s.q, s.p), energy(q1, p1), st);
-      if (!st) return st;
-    }
-    if constexpr (with_path) {
-      const vector q0 = s.q;
-      const T t0 = s.t;
-      detail::commit_step(s, q1, p1, tau_);
-      *path = Path(t0, s.t, tau_, engine_.method().path(q0, z));
-    } else {
-      detail::commit_step(s, q1, p1, tau_);
-    }
+    typename Scheme::template engine<Sys, T>::unknowns z;
+    const vector q0 = s.q;
+    const T t0 = s.t;
+    const step_status st = finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z), q1, p1, tau_, monitor_,
+                                       [this](const vector& q, const vector& p) { return energy(q, p); });
+    if (st) out = Path(t0, s.t, tau_, engine_.method().path(q0, z));
     return st;
-  }
-
- public:
-  /// `count` steps; throws on the first failure.
-  void advance(state& s, long count) const {
-    for (long i = 0; i < count; ++i) step(s);
   }
 
   /// The two-step form (x^{k-1}, x^k) -> x^{k+1} (eq. 3/11): the momentum at t_k from the path
@@ -233,12 +162,12 @@ class integrator {
   T energy(const state& s) const { return energy(s.q, s.p); }
   T energy(const vector& q, const vector& p) const {
     vector v;
-    if (!detail::derivatives<Sys, T>::velocity(sys_, q, p, v)) return std::numeric_limits<T>::quiet_NaN();
+    if (!lagrangian_derivatives<Sys, T>::velocity(sys_, q, p, v)) return std::numeric_limits<T>::quiet_NaN();
     return energy_qv<Sys, T>(sys_, q, v);
   }
 
  private:
-  step_status check(long k, const vector& a, const vector& b) const { return detail::check_step_input(k, tau_, a, b); }
+  step_status check(long k, const vector& a, const vector& b) const { return check_step_input(k, tau_, a, b); }
 
   Sys sys_;
   typename Scheme::template engine<Sys, T> engine_;

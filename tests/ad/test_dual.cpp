@@ -15,7 +15,7 @@
 #include "geomint/ad/dual.hpp"
 #include "scalar_types.hpp"
 
-using geomint::detail::dual;
+using geomint::dual;
 using R = boost::multiprecision::cpp_bin_float_100;
 
 namespace {

@@ -16,6 +16,7 @@
 ///   integrator in 50 digits.
 #include "geomint/analysis/exact_scheme.hpp"
 
+#include <numeric>
 #include <array>
 #include <cstdint>
 #include <initializer_list>
@@ -25,7 +26,7 @@ namespace {
 using geomint::exact_rational;
 using geomint::exact_two_step_scheme;
 using geomint::rational;
-using big = geomint::big_integer<geomint::detail::exact_limbs>;
+using big = geomint::big_integer<geomint::analysis::detail::exact_limbs>;
 
 /// R = P/Q has exactly these ascending coefficients (in s = tau^2).
 constexpr bool has_coefficients(const exact_two_step_scheme& r, std::initializer_list<std::int64_t> p,
@@ -47,18 +48,18 @@ constexpr bool has_coefficients(const exact_two_step_scheme& r, std::initializer
 /// degree-7 polynomials with 62-bit coefficients would need some 900-bit intermediates.
 constexpr bool is_reduced(const exact_two_step_scheme& r) {
   std::int64_t g = 0;
-  for (int k = 0; k <= r.numerator_degree; ++k) g = geomint::detail::gcd64(g, r.numerator[static_cast<std::size_t>(k)]);
-  for (int k = 0; k <= r.denominator_degree; ++k) g = geomint::detail::gcd64(g, r.denominator[static_cast<std::size_t>(k)]);
+  for (int k = 0; k <= r.numerator_degree; ++k) g = std::gcd(g, r.numerator[static_cast<std::size_t>(k)]);
+  for (int k = 0; k <= r.denominator_degree; ++k) g = std::gcd(g, r.denominator[static_cast<std::size_t>(k)]);
   if (g != 1 || r.denominator[0] <= 0) return false;
-  using poly = geomint::integer_polynomial<geomint::detail::exact_limbs, 2 * geomint::max_exact_m>;
+  using poly = geomint::integer_polynomial<geomint::analysis::detail::exact_limbs, 2 * geomint::max_exact_m>;
   poly P, Q;
   for (int k = 0; k <= r.numerator_degree; ++k) P[k] = big(r.numerator[static_cast<std::size_t>(k)]);
   for (int k = 0; k <= r.denominator_degree; ++k) Q[k] = big(r.denominator[static_cast<std::size_t>(k)]);
   P.trim();
   Q.trim();
   for (std::uint32_t p : {1000000007U, 998244353U}) {
-    if (geomint::detail::residue(P.lead(), p) == 0 || geomint::detail::residue(Q.lead(), p) == 0) continue;
-    return geomint::detail::gcd_degree_mod(P, Q, p) == 0;
+    if (geomint::residue(P.lead(), p) == 0 || geomint::residue(Q.lead(), p) == 0) continue;
+    return geomint::gcd_degree_mod(P, Q, p) == 0;
   }
   return false;
 }
@@ -214,7 +215,7 @@ static_assert(!exact_rational(power_of_two(80), big(3)).fits_rational() && third
 static_assert(exact_rational(power_of_two(80), big(3)) > rational(9223372036854775807LL));
 
 // Polynomials over Z: exact division and the gcd route with a real common factor.
-using small_poly = geomint::integer_polynomial<geomint::detail::exact_limbs, 6>;
+using small_poly = geomint::integer_polynomial<geomint::analysis::detail::exact_limbs, 6>;
 constexpr small_poly make_poly(std::initializer_list<std::int64_t> c) {
   small_poly p;
   int k = 0;

@@ -76,8 +76,8 @@ TEMPLATE_TEST_CASE("composition coefficients satisfy their order conditions", "[
     CHECK(geomint::test::abs_diff(sum, T(1)) <= geomint::test::eps_tol<T>(64));
     // Newton stays at the published solution (26 digits): within 1e-24 of it in 50 digits,
     // within a few ulps in double.
-    const T published = analysis::detail::from_decimal<T>(published_first[i]);
-    const T tol = std::numeric_limits<T>::digits10 > 30 ? analysis::detail::from_decimal<T>("1e-24") : geomint::test::eps_tol<T>(16);
+    const T published = from_decimal<T>(published_first[i]);
+    const T tol = std::numeric_limits<T>::digits10 > 30 ? from_decimal<T>("1e-24") : geomint::test::eps_tol<T>(16);
     CHECK(geomint::test::abs_diff(c.gamma()[0], published) <= tol);
   }
 }

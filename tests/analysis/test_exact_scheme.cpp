@@ -22,7 +22,7 @@ using geomint::test::eps_tol;
 namespace {
 
 using T = cpp_bin_float_50;
-using big = big_integer<detail::exact_limbs>;
+using big = big_integer<analysis::detail::exact_limbs>;
 
 /// R and the x^{k-1} coefficient of the integrator's two-step map (linear in its inputs).
 template <class Scheme>

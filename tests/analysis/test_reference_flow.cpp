@@ -56,7 +56,7 @@ void check_first_coefficient(const vec<T, Sys::dof>& q, const vec<T, Sys::dof>& 
   analysis::detail::taylor_coefficients<Sys, T>(q, v, 4, qc, vc);
   // v_1 = a(q, v): the closed-form field against the Euler-Lagrange acceleration of the
   // Lagrangian by automatic differentiation (two independent derivations).
-  const vec<T, Sys::dof> a = geomint::detail::derivatives<Sys, T>::acceleration(Sys{}, q, v);
+  const vec<T, Sys::dof> a = geomint::lagrangian_derivatives<Sys, T>::acceleration(Sys{}, q, v);
   for (int i = 0; i < Sys::dof; ++i) CHECK(geomint::test::abs_diff(vc[1][i], a[i]) <= geomint::test::eps_tol<T>(16));
 }
 

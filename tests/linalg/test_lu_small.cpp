@@ -47,7 +47,7 @@ TEMPLATE_LIST_TEST_CASE("lu_small solves to a backward error of a few eps", "[li
     const mat<T, N> A = sample_matrix<T, N>(seed, static_cast<int>(seed % 3));
     const vec<T, N> b = sample_vector<T, N>(seed + 100);
     vec<T, N> x;
-    REQUIRE(detail::solve_small<T, N>(A, b, x));
+    REQUIRE(solve_small<T, N>(A, b, x));
     // |A x - b| <= c N eps |A| |x| (Wilkinson's bound for LU with pivoting, c small).
     const T residual = (A * x - b).template lpNorm<Eigen::Infinity>();
     const T bound = T(4 * N) * std::numeric_limits<T>::epsilon() * A.template lpNorm<Eigen::Infinity>() *
@@ -69,10 +69,10 @@ TEMPLATE_LIST_TEST_CASE("lu_small: the inverse, and a factorisation reused for s
   constexpr int N = 4;
   const mat<T, N> A = sample_matrix<T, N>(7, 2);
   mat<T, N> inv;
-  REQUIRE(detail::invert_small<T, N>(A, inv));
+  REQUIRE(invert_small<T, N>(A, inv));
   const T off = (A * inv - mat<T, N>::Identity()).template lpNorm<Eigen::Infinity>();
   CHECK(off <= geomint::test::eps_tol<T>(64) * A.template lpNorm<Eigen::Infinity>() * inv.template lpNorm<Eigen::Infinity>());
-  detail::lu_small<T, N> lu;
+  lu_small<T, N> lu;
   REQUIRE(lu.factor(A));
   for (unsigned seed = 1; seed <= 3; ++seed) {
     const vec<T, N> b = sample_vector<T, N>(seed);
@@ -89,18 +89,18 @@ TEMPLATE_LIST_TEST_CASE("lu_small refuses singular and non-finite matrices", "[l
   // Row 2 = row 0 + row 1: singular by construction (exactly representable entries).
   mat<T, N> A;
   A << T(1), T(2), T(3), T(4), T(5), T(6), T(5), T(7), T(9);
-  detail::lu_small<T, N> lu;
+  lu_small<T, N> lu;
   CHECK_FALSE(lu.factor(A));
   vec<T, N> x;
-  CHECK_FALSE(detail::solve_small<T, N>(A, vec<T, N>::Ones(), x));
+  CHECK_FALSE(solve_small<T, N>(A, vec<T, N>::Ones(), x));
   CHECK(x.isZero());  // a singular but finite matrix gives x = 0, never garbage
   mat<T, N> Z = mat<T, N>::Zero();
   CHECK_FALSE(lu.factor(Z));
   mat<T, N> B = mat<T, N>::Identity();
   B(1, 2) = std::numeric_limits<T>::quiet_NaN();
   CHECK_FALSE(lu.factor(B));
-  CHECK_FALSE(detail::solve_small<T, N>(B, vec<T, N>::Ones(), x));
-  CHECK_FALSE(detail::all_finite(x));  // NaN input: the solution says so
+  CHECK_FALSE(solve_small<T, N>(B, vec<T, N>::Ones(), x));
+  CHECK_FALSE(all_finite(x));  // NaN input: the solution says so
   mat<T, N> inv;
-  CHECK_FALSE(detail::invert_small<T, N>(A, inv));
+  CHECK_FALSE(invert_small<T, N>(A, inv));
 }

@@ -18,7 +18,7 @@
 #include "geomint/integrator.hpp"
 #include "geomint/mechanics/constrained_systems.hpp"
 #include "geomint/mechanics/systems.hpp"
-#include "geomint/schemes/constrained_lpf.hpp"
+#include "geomint/constrained_integrator.hpp"
 #include "scalar_types.hpp"
 
 using namespace geomint;

@@ -5,7 +5,7 @@
 ///   vertical angular momentum of the spherical pendulum (the scheme is rotation-equivariant);
 /// - a second method: the double pendulum in angle coordinates integrated by the unconstrained
 ///   LPF integrator, compared at the order of the method.
-#include <geomint/schemes/constrained_lpf.hpp>
+#include <geomint/constrained_integrator.hpp>
 #include <geomint/mechanics/constrained_systems.hpp>
 #include <geomint/schemes/paper23.hpp>
 

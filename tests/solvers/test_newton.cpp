@@ -34,14 +34,14 @@ TEMPLATE_LIST_TEST_CASE("newton_solve: quadratic convergence to the closed-form 
     F[0] = x[0] * x[0] - T(2);
     J(0, 0) = T(2) * x[0];
   };
-  const step_status st = detail::newton_solve<1, T>(sqrt2, z, newton_options<T>{});
+  const step_status st = newton_solve<1, T>(sqrt2, z, newton_options<T>{});
   REQUIRE(st);
   CHECK(abs_diff(z[0], T(sqrt(T(2)))) <= eps_tol<T>(4));
   CHECK(st.iterations <= 12);  // quadratic: about log2(digits) iterations from 1
 
   vec<T, 2> w(T(2), T(1) / T(2));
   auto full = [](const vec<T, 2>& x, vec<T, 2>& F, mat<T, 2>& J) { circle_hyperbola<T>(x, F, &J); };
-  REQUIRE(detail::newton_solve<2, T>(full, w, newton_options<T>{}));
+  REQUIRE(newton_solve<2, T>(full, w, newton_options<T>{}));
   const T s6 = sqrt(T(6)), s2 = sqrt(T(2));
   CHECK(abs_diff(w[0], T((s6 + s2) / T(2))) <= eps_tol<T>(8));
   CHECK(abs_diff(w[1], T((s6 - s2) / T(2))) <= eps_tol<T>(8));
@@ -56,9 +56,9 @@ TEMPLATE_LIST_TEST_CASE("newton_solve_simplified: same root, and a reused factor
     if (J) ++jacobians;
     circle_hyperbola<T>(x, F, J);
   };
-  detail::jacobian_cache<T, 2> cache;
+  jacobian_cache<T, 2> cache;
   vec<T, 2> w(T(2), T(1) / T(2));
-  REQUIRE(detail::newton_solve_simplified<2, T>(residual, w, newton_options<T>{}, T(0), &cache));
+  REQUIRE(newton_solve_simplified<2, T>(residual, w, newton_options<T>{}, T(0), &cache));
   const T s6 = sqrt(T(6)), s2 = sqrt(T(2));
   CHECK(abs_diff(w[0], T((s6 + s2) / T(2))) <= eps_tol<T>(16));
   CHECK(abs_diff(w[1], T((s6 - s2) / T(2))) <= eps_tol<T>(16));
@@ -68,7 +68,7 @@ TEMPLATE_LIST_TEST_CASE("newton_solve_simplified: same root, and a reused factor
   const int before = jacobians;
   vec<T, 2> near = w;
   near[0] += sqrt(std::numeric_limits<T>::epsilon());
-  REQUIRE(detail::newton_solve_simplified<2, T>(residual, near, newton_options<T>{}, T(0), &cache));
+  REQUIRE(newton_solve_simplified<2, T>(residual, near, newton_options<T>{}, T(0), &cache));
   CHECK(jacobians == before);
   CHECK(abs_diff(near[0], w[0]) <= eps_tol<T>(16));
 }
@@ -83,7 +83,7 @@ TEMPLATE_LIST_TEST_CASE("Newton failures: singular Jacobian, no convergence, non
       F[0] = x[0] * x[0] + T(1);
       J(0, 0) = T(2) * x[0];
     };
-    CHECK(detail::newton_solve<1, T>(f, z, newton_options<T>{}).reason == step_failure::singular_jacobian);
+    CHECK(newton_solve<1, T>(f, z, newton_options<T>{}).reason == step_failure::singular_jacobian);
   }
   // F = x^2 + 1 has no real root: from x = 1/2 the iterates wander, the budget runs out.
   {
@@ -94,7 +94,7 @@ TEMPLATE_LIST_TEST_CASE("Newton failures: singular Jacobian, no convergence, non
     };
     newton_options<T> opt;
     opt.max_iterations = 5;
-    const step_status st = detail::newton_solve<1, T>(f, z, opt);
+    const step_status st = newton_solve<1, T>(f, z, opt);
     CHECK(st.reason == step_failure::no_convergence);
     CHECK(st.iterations == 5);
   }
@@ -106,7 +106,7 @@ TEMPLATE_LIST_TEST_CASE("Newton failures: singular Jacobian, no convergence, non
       F[0] = sqrt(x[0]);
       if (J) (*J)(0, 0) = T(1);
     };
-    CHECK(detail::newton_solve_simplified<1, T>(f, z, newton_options<T>{}, T(0)).reason ==
+    CHECK(newton_solve_simplified<1, T>(f, z, newton_options<T>{}, T(0)).reason ==
           step_failure::non_finite_iterate);
   }
 }

@@ -50,69 +50,30 @@ const char* usage_text =
     "  --csv       CSV output\n"
     "  --help      this text\n";
 
-/// The families by canonical name; '-' and '_' are interchangeable in the input.
-const std::vector<std::string> family_names = {"equispaced", "gauss-interior", "lobatto", "chebyshev"};
-
-std::string canonical_family(std::string name) {
-  for (char& ch : name)
-    if (ch == '_') ch = '-';
-  if (name == "gauss-lobatto") return "lobatto";
-  if (name == "chebyshev-lobatto") return "chebyshev";
-  return name;
-}
-
-template <class Family, int M>
-exact_rkn_tableau lpf_of(int m) {
-  if (m == M) return lpf_tableau<M, Family>();
-  if constexpr (M < max_exact_m) return lpf_of<Family, M + 1>(m);
-  throw std::logic_error("m out of range");
-}
-template <int M>
-exact_rkn_tableau galerkin_of(int m) {
-  if (m == M) return galerkin_tableau<M>();
-  if constexpr (M < max_exact_stages) return galerkin_of<M + 1>(m);
-  throw std::logic_error("m out of range");
-}
-
 /// The tableau of a scheme (computed at run time by the constexpr functions).
 exact_rkn_tableau tableau_of(const std::string& scheme, const std::string& family, int m) {
   if (scheme == "midpoint") return midpoint_tableau();
   if (scheme == "trapezoidal") return trapezoidal_tableau();
-  if (scheme == "galerkin") return galerkin_of<1>(m);
-  if (family == "equispaced") return lpf_of<equispaced, 2>(m);
-  if (family == "gauss-interior") return lpf_of<gauss_interior, 2>(m);
-  if (family == "lobatto") return lpf_of<gauss_lobatto, 2>(m);
-  return lpf_of<chebyshev_lobatto, 2>(m);
+  if (scheme == "galerkin") return with_int<1, max_exact_stages>(m, []<int M>() { return galerkin_tableau<M>(); });
+  return with_int<2, max_exact_m>(
+      m, [&]<int M>() { return with_node_family(family, []<class Family>() { return lpf_tableau<M, Family>(); }); });
 }
 
-/// The stages in ascending order, in 50 digits (for the decimal tableau).
-template <class Family, int M>
-std::vector<decimal> lpf_nodes_of(int m) {
-  if (m == M) {
-    const auto c = nodes<Family, M, decimal>();
-    return std::vector<decimal>(c.begin() + 1, c.end() - 1);
-  }
-  if constexpr (M < max_exact_m) return lpf_nodes_of<Family, M + 1>(m);
-  throw std::logic_error("m out of range");
+/// The interior nodes of an LPF family in ascending order, in 50 digits (for the decimal tableau).
+std::vector<decimal> interior_nodes_of(const std::string& family, int m) {
+  return with_int<2, max_exact_m + 1>(m, [&]<int M>() {
+    return with_node_family(family, []<class Family>() {
+      const auto c = nodes<Family, M, decimal>();
+      return std::vector<decimal>(c.begin() + 1, c.end() - 1);
+    });
+  });
 }
+/// The stages in ascending order, in 50 digits: Galerkin's m Gauss points are the interior
+/// nodes of gauss_interior with m + 1.
 std::vector<decimal> stages_of(const std::string& scheme, const std::string& family, int m) {
-  if (scheme == "galerkin") {
-    std::vector<decimal> out;
-    // Gauss nodes of m points = interior nodes of gauss_interior with m + 1.
-    if (m + 1 <= max_exact_m) {
-      const auto all = [&] {
-        return lpf_nodes_of<gauss_interior, 2>(m + 1);
-      }();
-      return all;
-    }
-    const auto c = nodes<gauss_interior, 9, decimal>();
-    return std::vector<decimal>(c.begin() + 1, c.end() - 1);
-  }
+  if (scheme == "galerkin") return interior_nodes_of(std::string(gauss_interior::name), m + 1);
   if (scheme == "midpoint" || scheme == "trapezoidal") return {};
-  if (family == "equispaced") return lpf_nodes_of<equispaced, 2>(m);
-  if (family == "gauss-interior") return lpf_nodes_of<gauss_interior, 2>(m);
-  if (family == "lobatto") return lpf_nodes_of<gauss_lobatto, 2>(m);
-  return lpf_nodes_of<chebyshev_lobatto, 2>(m);
+  return interior_nodes_of(family, m);
 }
 
 decimal to_decimal(const exact_number& x) { return decimal(x.num.str()) / decimal(x.den.str()); }
@@ -295,18 +256,7 @@ int main(int argc, char** argv) {
   cl.value("--scheme", [&](const std::string& v) {
     o.scheme = cli::parse_choice("--scheme", v, {"lpf", "midpoint", "trapezoidal", "galerkin"});
   });
-  cl.value("--nodes", [&](const std::string& v) {
-    std::string text = v;
-    std::vector<std::string> items;
-    if (text == "all") {
-      items = family_names;
-    } else {
-      std::string canonical;
-      for (const std::string& item : cli::split_list("--nodes", text, 16)) canonical += (canonical.empty() ? "" : ",") + canonical_family(item);
-      items = cli::parse_choice_list("--nodes", canonical, family_names);
-    }
-    o.families = items;
-  });
+  cl.value("--nodes", [&](const std::string& v) { o.families = cli::parse_node_family_list("--nodes", v); });
   cl.value("--m", [&](const std::string& v) { o.m_text = v; o.m_given = true; });
   if (const auto done = cl.parse(argc, argv)) return *done;
   try {

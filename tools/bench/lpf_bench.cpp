@@ -22,18 +22,11 @@ namespace {
 
 using mp50 = boost::multiprecision::cpp_bin_float_50;
 
+/// The system's initial data (mechanics/systems.hpp).
 template <class Sys, class T>
 std::pair<geomint::vec<T, Sys::dof>, geomint::vec<T, Sys::dof>> initial() {
-  constexpr int n = Sys::dof;
-  geomint::vec<T, n> q, v;
-  if constexpr (n == 1) {
-    q[0] = T(1);
-    v[0] = T(0);
-  } else {
-    using std::sqrt;
-    q << T(1) / T(2), T(0);
-    v << T(0), T(sqrt(T(3)));
-  }
+  geomint::vec<T, Sys::dof> q, v;
+  Sys::initial_data(q, v);
   return {q, v};
 }
 

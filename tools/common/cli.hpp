@@ -36,6 +36,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "geomint/core/dispatch.hpp"
+
 namespace geomint::cli {
 
 /// Exit statuses shared by the tools.
@@ -239,6 +241,28 @@ inline std::vector<std::string> parse_choice_list(std::string_view flag, std::st
   if (text == "all") return allowed;
   std::vector<std::string> out;
   for (const std::string& item : split_list(flag, text, allowed.size() * 4 + 4)) out.push_back(parse_choice(flag, item, allowed));
+  return out;
+}
+
+/// The node families' printed names (geomint/core/dispatch.hpp).
+inline const std::vector<std::string>& node_family_list() {
+  static const std::vector<std::string> names(geomint::node_family_names.begin(), geomint::node_family_names.end());
+  return names;
+}
+
+/// A node family under any of its spellings (gauss-interior, gauss_interior, ...), returned as
+/// its printed name.
+inline std::string parse_node_family(std::string_view flag, std::string_view text) {
+  if (const auto name = geomint::canonical_node_family(text)) return std::string(*name);
+  return parse_choice(flag, text, node_family_list());  // not a family: the usage error names them
+}
+
+/// "all" or a comma list of node families (any spelling).
+inline std::vector<std::string> parse_node_family_list(std::string_view flag, std::string_view text) {
+  if (text == "all") return node_family_list();
+  std::vector<std::string> out;
+  for (const std::string& item : split_list(flag, text, node_family_list().size() * 4 + 4))
+    out.push_back(parse_node_family(flag, item));
   return out;
 }
 

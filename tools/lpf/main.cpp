@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli.hpp"
+#include "digits.hpp"
 #include "run.hpp"
 
 namespace {
@@ -11,7 +12,8 @@ namespace {
 const char* usage =
     "usage: geomint-run [--system harmonic|pendulum|kepler|charged|circle|spherical]\n"
     "                   [--scheme lpf|midpoint|trapezoidal|galerkin|paper23]\n"
-    "                   [--nodes equispaced|lobatto|chebyshev|gauss-interior] [--basis lagrange|bernstein]\n"
+    "                   [--nodes equispaced|lobatto|chebyshev|gauss-interior (or gauss_lobatto, ...)]\n"
+    "                   [--basis lagrange|bernstein]\n"
     "                   [--m M (2..8)] [--tau T (> 0)] [--steps N] [--every K]\n"
     "                   [--q0 a[,b]] [--p0 a[,b]] [--digits 16|50|100] [--csv]\n"
     "Integrates the system with the one-step (q, p) form of the chosen scheme. With --csv prints\n"
@@ -30,21 +32,11 @@ const char* usage =
 /// Runs the chosen system and scheme in the chosen scalar; returns the exit status.
 int dispatch(const geomint::run::options& o) {
   using namespace geomint::run;
-#define GEOMINT_RUN_DISPATCH(sys)                 \
-  if (o.system == #sys) {                         \
-    if (o.digits == 16) return run_##sys##_16(o); \
-    if (o.digits == 50) return run_##sys##_50(o); \
-    return run_##sys##_100(o);                    \
-  }
-  if (o.system == "harmonic" || o.system == "pendulum" || o.system == "kepler" || o.system == "charged") {
-    if (o.digits == 16) return run_free_16(o);
-    if (o.digits == 50) return run_free_50(o);
-    return run_free_100(o);
-  }
-  GEOMINT_RUN_DISPATCH(circle)
-  GEOMINT_RUN_DISPATCH(spherical)
-#undef GEOMINT_RUN_DISPATCH
-  throw std::invalid_argument("unknown system");
+  if (o.system == "circle")
+    return geomint::tools::with_digits(o.digits, [&]<int D>() { return run_constrained<constrained_system::circle, D>(o); });
+  if (o.system == "spherical")
+    return geomint::tools::with_digits(o.digits, [&]<int D>() { return run_constrained<constrained_system::spherical, D>(o); });
+  return geomint::tools::with_digits(o.digits, [&]<int D>() { return run_free<D>(o); });
 }
 
 }  // namespace
@@ -62,7 +54,7 @@ int main(int argc, char** argv) {
         o.scheme = cli::parse_choice("--scheme", v, {"lpf", "midpoint", "trapezoidal", "galerkin", "paper23"});
       })
       .value("--nodes", [&](const std::string& v) {
-        o.nodes = cli::parse_choice("--nodes", v, {"equispaced", "lobatto", "chebyshev", "gauss-interior"});
+        o.nodes = cli::parse_node_family("--nodes", v);
       })
       .value("--basis", [&](const std::string& v) { o.basis = cli::parse_choice("--basis", v, {"lagrange", "bernstein"}); })
       .value("--digits", [&](const std::string& v) { o.digits = std::stoi(cli::parse_choice("--digits", v, {"16", "50", "100"})); })

@@ -1,6 +1,6 @@
 #pragma once
 /// geomint-run: options and the entry points per scalar (free systems) and per (constrained
-/// system, scalar) (one translation unit each).
+/// system, scalar), one translation unit each.
 #include <string>
 #include <vector>
 
@@ -21,12 +21,14 @@ struct options {
   bool monitor = true;  ///< the step monitor (geomint/solvers/step_monitor.hpp); --no-monitor turns it off
 };
 
-#define GEOMINT_RUN_DECLARE(sys, digits) int run_##sys##_##digits(const options&);
-#define GEOMINT_RUN_FOR_DIGITS(sys) GEOMINT_RUN_DECLARE(sys, 16) GEOMINT_RUN_DECLARE(sys, 50) GEOMINT_RUN_DECLARE(sys, 100)
-GEOMINT_RUN_FOR_DIGITS(free)  // harmonic, pendulum, kepler, charged (run_free.cpp)
-GEOMINT_RUN_FOR_DIGITS(circle)
-GEOMINT_RUN_FOR_DIGITS(spherical)
-#undef GEOMINT_RUN_FOR_DIGITS
-#undef GEOMINT_RUN_DECLARE
+/// The free systems (harmonic, pendulum, kepler, charged) in the scalar of `--digits D`
+/// (run_free.cpp).
+template <int Digits>
+int run_free(const options&);
+
+/// The constrained systems; one translation unit per (system, digits) (run_constrained_tu.cpp).
+enum class constrained_system { circle, spherical };
+template <constrained_system System, int Digits>
+int run_constrained(const options&);
 
 }  // namespace geomint::run

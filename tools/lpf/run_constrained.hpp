@@ -7,28 +7,20 @@
 #include <limits>
 #include <string>
 
-#include "geomint/schemes/constrained_lpf.hpp"
+#include "geomint/constrained_integrator.hpp"
+#include "geomint/core/dispatch.hpp"
 #include "geomint/mechanics/constrained_systems.hpp"
 #include "geomint/schemes/paper23.hpp"
 #include "run_impl.hpp"
 
 namespace geomint::run {
 
-/// Default initial data: circle at (1, 0) with velocity (0, 1); spherical pendulum at 45
-/// degrees from the downward vertical, (sin, 0, -cos)(pi/4), with velocity (0, 4/5, 0).
+/// The system's initial data (mechanics/constrained_systems.hpp), overridden by --q0 / --p0.
 template <class Sys, class T>
 std::pair<vec<T, Sys::dof>, vec<T, Sys::dof>> constrained_initial_data(const options& o) {
   constexpr int n = Sys::dof;
   vec<T, n> q, p;
-  if constexpr (n == 2) {
-    q << T(1), T(0);
-    p << T(0), T(1);
-  } else {
-    using std::sqrt;
-    const T r = sqrt(T(1) / T(2));
-    q << r, T(0), -r;
-    p << T(0), T(4) / T(5), T(0);
-  }
+  Sys::initial_data(q, p);  // unit masses: the velocity is the momentum
   auto read = [&](const std::vector<std::string>& in, vec<T, n>& out, const char* flag) {
     if (in.empty()) return;
     if (static_cast<int>(in.size()) != n)
@@ -98,20 +90,6 @@ int run_constrained_fb(const options& o) {
   return 0;
 }
 
-template <int M, class Family, class Sys, class Con, class T>
-int run_constrained_f(const options& o) {
-  if (o.basis == "bernstein") return run_constrained_fb<M, Family, bernstein, Sys, Con, T>(o);
-  return run_constrained_fb<M, Family, lagrange, Sys, Con, T>(o);
-}
-
-template <int M, class Sys, class Con, class T>
-int run_constrained_m(const options& o) {
-  if (o.nodes == "lobatto") return run_constrained_f<M, gauss_lobatto, Sys, Con, T>(o);
-  if (o.nodes == "chebyshev") return run_constrained_f<M, chebyshev_lobatto, Sys, Con, T>(o);
-  if (o.nodes == "gauss-interior") return run_constrained_f<M, gauss_interior, Sys, Con, T>(o);
-  return run_constrained_f<M, equispaced, Sys, Con, T>(o);
-}
-
 /// The paper's scheme (23) on the circle, as printed: x^0 = q0, x^1 from one step of the
 /// constrained LPF integrator (m = 2, the same fitted parabola). The momentum column is the
 /// scheme's own, the slope of the fitted parabola at t_k: (x^{k-1} - 4 eta + 3 x^k)/tau with
@@ -178,15 +156,11 @@ int run_constrained_system(const options& o) {
     }
   }
   if (o.scheme != "lpf") throw std::invalid_argument("--system " + o.system + " supports --scheme lpf|paper23");
-  switch (o.m) {
-    case 2: return run_constrained_m<2, Sys, Con, T>(o);
-    case 3: return run_constrained_m<3, Sys, Con, T>(o);
-    case 4: return run_constrained_m<4, Sys, Con, T>(o);
-    case 5: return run_constrained_m<5, Sys, Con, T>(o);
-    case 6: return run_constrained_m<6, Sys, Con, T>(o);
-    case 7: return run_constrained_m<7, Sys, Con, T>(o);
-    default: return run_constrained_m<8, Sys, Con, T>(o);
-  }
+  return with_int<2, 8>(o.m, [&]<int M>() {
+    return with_node_family(o.nodes, [&]<class Family>() {
+      return with_basis(o.basis, [&]<class Basis>() { return run_constrained_fb<M, Family, Basis, Sys, Con, T>(o); });
+    });
+  });
 }
 
 }  // namespace geomint::run

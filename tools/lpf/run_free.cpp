@@ -2,7 +2,11 @@
 #include "run_impl.hpp"
 
 namespace geomint::run {
-int run_free_16(const options& o) { return run_free<tools::scalar_for_digits<16>>(o); }
-int run_free_50(const options& o) { return run_free<tools::scalar_for_digits<50>>(o); }
-int run_free_100(const options& o) { return run_free<tools::scalar_for_digits<100>>(o); }
+template <int Digits>
+int run_free(const options& o) {
+  return run_free_system<tools::scalar_for_digits<Digits>>(o);
+}
+template int run_free<16>(const options&);
+template int run_free<50>(const options&);
+template int run_free<100>(const options&);
 }  // namespace geomint::run

@@ -50,11 +50,11 @@ inline int report_failure(const step_status& st) {
 
 /// The system's default initial data (tools/common/stepper.hpp), overridden by --q0 / --p0.
 template <class T>
-std::pair<tools::state_vector<T>, tools::state_vector<T>> initial_data(const options& o, const tools::stepper<T>& stepper) {
+std::pair<dynamic_vector<T>, dynamic_vector<T>> initial_data(const options& o, const any_stepper<T>& stepper) {
   auto [q, qdot] = tools::default_initial_data<T>(o.system);
-  tools::state_vector<T> p = stepper.momentum(q, qdot);
+  dynamic_vector<T> p = stepper.momentum(q, qdot);
   const int n = stepper.dof();
-  auto read = [&](const std::vector<std::string>& in, tools::state_vector<T>& out, const char* flag) {
+  auto read = [&](const std::vector<std::string>& in, dynamic_vector<T>& out, const char* flag) {
     if (in.empty()) return;
     if (static_cast<int>(in.size()) != n)
       throw std::invalid_argument(std::string(flag) + " needs " + std::to_string(n) + " value(s) for this system");
@@ -67,9 +67,9 @@ std::pair<tools::state_vector<T>, tools::state_vector<T>> initial_data(const opt
 
 /// The integration loop of geomint-run for a free system, in the scalar T.
 template <class T>
-int run_free(const options& o) {
+int run_free_system(const options& o) {
   if (o.scheme == "paper23") throw std::invalid_argument("--scheme paper23 is the paper's scheme for --system circle only");
-  tools::scheme_spec spec;
+  scheme_spec spec;
   spec.scheme = o.scheme;
   spec.nodes = o.nodes;
   spec.basis = o.basis;
@@ -79,7 +79,7 @@ int run_free(const options& o) {
   const int n = stepper->dof();
   const T tau = parse_scalar<T>(o.tau);
   // Not a structured binding: the lambdas below capture q and p (Clang 14 cannot).
-  tools::state_vector<T> q, p;
+  dynamic_vector<T> q, p;
   std::tie(q, p) = initial_data<T>(o, *stepper);
   long step = 0;
   T t(0);
@@ -100,13 +100,13 @@ int run_free(const options& o) {
   }
   const newton_options<T> opt;
   T max_dE(0);
-  tools::state_vector<T> q1 = q, p1 = p;
+  dynamic_vector<T> q1 = q, p1 = p;
   // CPU time of the stepping loop (steps, energy monitor and rows), printed to stderr as
   // cpu_seconds=X so that outside tools can time a run without the process start-up.
   timespec cpu_start{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu_start);
   for (long k = 0; k < o.steps; ++k) {
-    step_status st = stepper->step(q, p, tau, q1, p1, opt);
+    step_status st = stepper->try_step(q, p, tau, q1, p1, opt);
     st.step = step;
     if (!st) return report_failure(st);
     q = q1;

@@ -123,8 +123,8 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
       const analysis::dynamic_vector<T> q0d = q0, p0d = stepper->momentum(q0, qdot0);
       analysis::step_function<T> step = [&](const analysis::dynamic_vector<T>& q, const analysis::dynamic_vector<T>& p,
                                             const T& tau, analysis::dynamic_vector<T>& q1, analysis::dynamic_vector<T>& p1) {
-        tools::state_vector<T> a, b;
-        if (!stepper->step(q, p, tau, a, b)) return false;
+        dynamic_vector<T> a, b;
+        if (!stepper->try_step(q, p, tau, a, b)) return false;
         q1 = a;
         p1 = b;
         return true;

@@ -46,18 +46,18 @@ T parse_number(const std::string& flag, const std::string& s) {
   std::istringstream in(s);
   T v;
   in >> v;
-  if (in.fail() || !in.eof() || !geomint::detail::is_finite(v))
+  if (in.fail() || !in.eof() || !geomint::is_finite(v))
     throw geomint::cli::usage_error(flag + " expects a finite number, got '" + s + "'");
   return v;
 }
 
 /// The initial state (q0, p0) of a case in the scalar T: defaults, overridden by --q0/--p0.
 template <class T>
-analysis::phase_vector<T> initial_state(const std::string& system, const tools::stepper<T>& stepper, const extra_options& x) {
+analysis::phase_vector<T> initial_state(const std::string& system, const any_stepper<T>& stepper, const extra_options& x) {
   auto [q, qdot] = tools::default_initial_data<T>(system);
-  tools::state_vector<T> p = stepper.momentum(q, qdot);
+  dynamic_vector<T> p = stepper.momentum(q, qdot);
   const int n = stepper.dof();
-  auto read = [&](const std::vector<std::string>& in, tools::state_vector<T>& out, const char* flag) {
+  auto read = [&](const std::vector<std::string>& in, dynamic_vector<T>& out, const char* flag) {
     if (in.empty()) return;
     if (static_cast<int>(in.size()) != n)
       throw geomint::cli::usage_error(std::string(flag) + " needs " + std::to_string(n) + " value(s) for " + system);
@@ -72,12 +72,12 @@ analysis::phase_vector<T> initial_state(const std::string& system, const tools::
 
 /// The one-step map of a stepper as a phase_map.
 template <class T>
-analysis::phase_map<T> as_map(const tools::stepper<T>& stepper, const T& tau) {
+analysis::phase_map<T> as_map(const any_stepper<T>& stepper, const T& tau) {
   return [&stepper, tau](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
     const int n = stepper.dof();
-    const tools::state_vector<T> q = z.head(n), p = z.tail(n);
-    tools::state_vector<T> q1, p1;
-    if (!stepper.step(q, p, tau, q1, p1)) return false;
+    const dynamic_vector<T> q = z.head(n), p = z.tail(n);
+    dynamic_vector<T> q1, p1;
+    if (!stepper.try_step(q, p, tau, q1, p1)) return false;
     z1.resize(2 * n);
     z1 << q1, p1;
     return true;
@@ -132,7 +132,7 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
         const auto e = analysis::energy_behaviour<double>(
             as_map<double>(*fast, long_tau),
             [&](const analysis::phase_vector<double>& z) {
-              return fast->energy(tools::state_vector<double>(z.head(n)), tools::state_vector<double>(z.tail(n)));
+              return fast->energy(dynamic_vector<double>(z.head(n)), dynamic_vector<double>(z.tail(n)));
             },
             zd, long_tau, x.long_steps);
         if (!e.ok) rows[i].failure = "long run failed after " + std::to_string(e.steps) + " steps (a step failed or left the scheme's regime)";

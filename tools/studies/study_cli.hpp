@@ -19,7 +19,7 @@ namespace geomint::studies {
 /// One study case: a system and a scheme.
 struct study_case {
   std::string system;
-  tools::scheme_spec spec;
+  scheme_spec spec;
 };
 
 /// The flags common to the studies.
@@ -36,8 +36,8 @@ struct selection {
   void register_flags(cli::parser& cl, std::vector<std::string> allowed_digits) {
     cl.toggle("--csv", [this] { csv = true; })
         .value("--system", [this](const std::string& v) { systems = cli::parse_choice_list("--system", v, tools::free_systems()); })
-        .value("--scheme", [this](const std::string& v) { schemes = cli::parse_choice_list("--scheme", v, tools::schemes()); })
-        .value("--nodes", [this](const std::string& v) { nodes = cli::parse_choice_list("--nodes", v, tools::node_families()); })
+        .value("--scheme", [this](const std::string& v) { schemes = cli::parse_choice_list("--scheme", v, tools::scheme_list()); })
+        .value("--nodes", [this](const std::string& v) { nodes = cli::parse_node_family_list("--nodes", v); })
         .value("--m", [this](const std::string& v) { std::tie(m_low, m_high) = cli::parse_integer_range<int>("--m", v, 2, 8); })
         .value("--digits", [this, allowed_digits](const std::string& v) {
           digits = std::stoi(cli::parse_choice("--digits", v, allowed_digits));
@@ -51,7 +51,7 @@ struct selection {
     std::vector<study_case> out;
     for (const std::string& system : systems)
       for (const std::string& scheme : schemes) {
-        tools::scheme_spec s;
+        scheme_spec s;
         s.scheme = scheme;
         if (!s.has_m()) {
           out.push_back({system, s});
@@ -70,7 +70,7 @@ struct selection {
 };
 
 /// The m column of the tables ("-" for midpoint and trapezoidal).
-inline std::string m_label(const tools::scheme_spec& s) { return s.has_m() ? std::to_string(s.m) : "-"; }
+inline std::string m_label(const scheme_spec& s) { return s.has_m() ? std::to_string(s.m) : "-"; }
 
 /// Runs job(i) for i in [0, count) on `threads` threads (each job owns its own stepper).
 template <class Job>

@@ -57,8 +57,8 @@ int main(int argc, char** argv) {
   try {
     using namespace geomint::workprecision;
     int rc = 0;
-    if (o.system == "kepler") rc = o.digits == 16 ? run_kepler_16(o) : run_kepler_50(o);
-    else rc = o.digits == 16 ? run_pendulum_16(o) : run_pendulum_50(o);
+    if (o.system == "kepler") rc = o.digits == 16 ? run_regime<kepler_problem, 16>(o) : run_regime<kepler_problem, 50>(o);
+    else rc = o.digits == 16 ? run_regime<pendulum_problem, 16>(o) : run_regime<pendulum_problem, 50>(o);
     return geomint::cli::finish_stdout("geomint-workprecision", rc);
   } catch (const std::invalid_argument& e) {
     std::cerr << "geomint-workprecision: " << e.what() << "\n" << usage;

@@ -12,15 +12,29 @@ namespace geomint::workprecision {
 template <class T, int n>
 using arr = std::array<T, n>;
 
-/// Pendulum qddot = -sin q from theta0 = 1 at rest.
+/// The system's initial data (`Sys::initial_data`, mechanics/systems.hpp) as (q_0, p_0): unit
+/// masses, so p_0 = qdot_0.
+template <class Sys, class T>
+std::array<arr<T, Sys::dof>, 2> initial_data() {
+  vec<T, Sys::dof> q, qdot;
+  Sys::initial_data(q, qdot);
+  std::array<arr<T, Sys::dof>, 2> out;
+  for (int i = 0; i < Sys::dof; ++i) {
+    out[0][static_cast<std::size_t>(i)] = q[i];
+    out[1][static_cast<std::size_t>(i)] = qdot[i];
+  }
+  return out;
+}
+
+/// Pendulum qddot = -sin q from theta0 = 1 at rest (systems::pendulum::initial_data).
 struct pendulum_problem {
   using sys = systems::pendulum;
   static constexpr int n = 1;
   static constexpr const char* name = "pendulum";
   template <class T>
-  static arr<T, n> q0() { return {T(1)}; }
+  static arr<T, n> q0() { return initial_data<sys, T>()[0]; }
   template <class T>
-  static arr<T, n> p0() { return {T(0)}; }
+  static arr<T, n> p0() { return initial_data<sys, T>()[1]; }
   template <class T>
   static T energy(const arr<T, n>& q, const arr<T, n>& p) {
     using std::cos;
@@ -35,18 +49,15 @@ struct pendulum_problem {
   static analysis::closed_form_state<R, n> exact(const R& t) { return analysis::pendulum_from_rest<R>(R(1), t); }
 };
 
-/// Kepler, a = 1, e = 1/2, from pericentre: q0 = (1/2, 0), p0 = (0, sqrt 3).
+/// Kepler, a = 1, e = 1/2, from pericentre (systems::kepler::initial_data).
 struct kepler_problem {
   using sys = systems::kepler;
   static constexpr int n = 2;
   static constexpr const char* name = "kepler";
   template <class T>
-  static arr<T, n> q0() { return {T(1) / T(2), T(0)}; }
+  static arr<T, n> q0() { return initial_data<sys, T>()[0]; }
   template <class T>
-  static arr<T, n> p0() {
-    using std::sqrt;
-    return {T(0), T(sqrt(T(3)))};
-  }
+  static arr<T, n> p0() { return initial_data<sys, T>()[1]; }
   template <class T>
   static T energy(const arr<T, n>& q, const arr<T, n>& p) {
     using std::sqrt;

@@ -22,13 +22,9 @@ struct boost::numeric::odeint::detail::extract_value_type<boost::multiprecision:
 namespace geomint::workprecision {
 namespace {
 
-#define GEOMINT_WP_CAT2(a, b) a##b
-#define GEOMINT_WP_CAT(a, b) GEOMINT_WP_CAT2(a, b)
-using P = GEOMINT_WP_CAT(GEOMINT_WP_PROBLEM, _problem);
-
 /// The methods and first knobs (chosen so that the first error is near 1e-4 in double over
 /// T = 1000 and near 1e-12 in 50 digits over T = 100).
-template <class T>
+template <class P, class T>
 std::vector<method<T, P::n>> methods_16() {
   using namespace geomint;
   std::vector<method<T, P::n>> all;
@@ -58,7 +54,7 @@ std::vector<method<T, P::n>> methods_16() {
   return all;
 }
 
-template <class T>
+template <class P, class T>
 std::vector<method<T, P::n>> methods_50() {
   using namespace geomint;
   std::vector<method<T, P::n>> all;
@@ -84,13 +80,23 @@ std::vector<method<T, P::n>> methods_50() {
 
 }  // namespace
 
-int GEOMINT_WP_CAT(GEOMINT_WP_CAT(GEOMINT_WP_CAT(run_, GEOMINT_WP_PROBLEM), _), GEOMINT_WP_DIGITS)(const settings& o) {
-#if GEOMINT_WP_DIGITS == 16
-  return run_sweeps<P, double, boost::multiprecision::cpp_bin_float_50>(o, regime_16(), methods_16<double>());
+template <class P, int Digits>
+int run_regime(const settings& o) {
+#if GEOMINT_WP_STUB
+  (void)o;
+  std::cerr << "geomint-workprecision: --digits " << Digits
+            << " is not compiled into this build (configured with GEOMINT_RUN_MULTIPRECISION=OFF)\n";
+  return 2;
 #else
-  using mp = boost::multiprecision::cpp_bin_float_50;
-  return run_sweeps<P, mp, boost::multiprecision::cpp_bin_float_100>(o, regime_50(), methods_50<mp>());
+  if constexpr (Digits == 16) {
+    return run_sweeps<P, double, boost::multiprecision::cpp_bin_float_50>(o, regime_16(), methods_16<P, double>());
+  } else {
+    using mp = boost::multiprecision::cpp_bin_float_50;
+    return run_sweeps<P, mp, boost::multiprecision::cpp_bin_float_100>(o, regime_50(), methods_50<P, mp>());
+  }
 #endif
 }
+
+template int run_regime<GEOMINT_WP_PROBLEM, GEOMINT_WP_DIGITS>(const settings&);
 
 }  // namespace geomint::workprecision

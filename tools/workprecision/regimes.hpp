@@ -1,6 +1,7 @@
 #pragma once
-/// geomint-workprecision: the two regimes and the entry points per (problem, digits).
+/// geomint-workprecision: the two regimes and the entry point per (problem, digits).
 #include "measurement.hpp"
+#include "problems.hpp"
 
 namespace geomint::workprecision {
 
@@ -9,9 +10,8 @@ inline regime regime_16() { return {16, 1000, 1e-13, {{1e-10, 0.5}, {1e-12, 1.0 
 /// cpp_bin_float_50 over T = 100, errors 1e-15..1e-40; goal at 1e-30 (1/10).
 inline regime regime_50() { return {50, 100, 1e-40, {{1e-30, 0.1}}, {1e-20, 1e-35}}; }
 
-int run_pendulum_16(const settings&);
-int run_pendulum_50(const settings&);
-int run_kepler_16(const settings&);
-int run_kepler_50(const settings&);
+/// The sweeps of one (problem, digits) pair, defined in one translation unit each (regime.cpp).
+template <class Problem, int Digits>
+int run_regime(const settings&);
 
 }  // namespace geomint::workprecision

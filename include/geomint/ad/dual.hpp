@@ -18,7 +18,7 @@
 
 #include <Eigen/Core>
 
-namespace geomint::detail {
+namespace geomint {
 
 template <class T, int N>
 struct dual;
@@ -308,13 +308,13 @@ template <class T, int N> dual<T, N> pow(const dual<T, N>& x, const dual<T, N>& 
   return r;
 }
 
-}  // namespace geomint::detail
+}  // namespace geomint
 
 /// Eigen needs NumTraits to store duals in fixed-size matrices and call dot/squaredNorm.
 namespace Eigen {
 template <class T, int N>
-struct NumTraits<geomint::detail::dual<T, N>> : NumTraits<T> {
-  using Real = geomint::detail::dual<T, N>;
+struct NumTraits<geomint::dual<T, N>> : NumTraits<T> {
+  using Real = geomint::dual<T, N>;
   using NonInteger = Real;
   using Nested = Real;
   using Literal = Real;

@@ -40,16 +40,6 @@ namespace geomint::analysis {
 
 namespace detail {
 
-/// A decimal string as a T, without passing through double when T is wider.
-template <class T>
-T from_decimal(const char* s) {
-  if constexpr (std::is_floating_point_v<T>) {
-    return static_cast<T>(std::strtold(s, nullptr));
-  } else {
-    return T(s);
-  }
-}
-
 /// The words of degree <= p over the letters Y_1, Y_3, ..., Y_p (letter Y_k has degree k), and
 /// for each word its splits into prefix and suffix: what multiplying by one factor needs.
 class word_table {
@@ -184,7 +174,7 @@ class symmetric_composition {
     if (static_cast<int>(start.size()) != half || half > max_unknowns)
       throw std::logic_error("geomint::symmetric_composition: wrong number of start values");
     std::vector<T> x(static_cast<std::size_t>(half));
-    for (int i = 0; i < half; ++i) x[static_cast<std::size_t>(i)] = detail::from_decimal<T>(start[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < half; ++i) x[static_cast<std::size_t>(i)] = from_decimal<T>(start[static_cast<std::size_t>(i)]);
     refine(x, stages);
     gamma_ = expand(x, stages);
   }
@@ -213,7 +203,7 @@ class symmetric_composition {
   /// conditions are redundant, and for s17 and s35 the solution set has free directions; the
   /// minimum-norm step stays next to the published point.
   void refine(std::vector<T>& x, int stages) {
-    using D = geomint::detail::dual<T, max_unknowns>;
+    using D = geomint::dual<T, max_unknowns>;
     using std::abs;
     const detail::word_table words(order_);
     const int K = static_cast<int>(x.size());

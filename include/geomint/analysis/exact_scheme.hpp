@@ -24,6 +24,7 @@
 /// big_rational.hpp, integer_polynomial.hpp): overflow throws (a compile error in a constant
 /// expression, never a wrong value).
 
+#include <numeric>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -42,7 +43,7 @@
 
 namespace geomint {
 
-namespace detail {
+namespace analysis::detail {
 
 // ---------------------------------------------------------------------------------------------
 // The scheme's R = P / Q from the momentum coefficients A, B; reduction; error series.
@@ -52,11 +53,11 @@ namespace detail {
 /// intermediate (m = 8) has 199 bits.
 inline constexpr int exact_limbs = 12;
 
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// The exact leading error coefficient: a reduced big rational (to_string: `str()`), comparable
 /// with geomint::rational.
-using exact_rational = big_rational<detail::exact_limbs>;
+using exact_rational = big_rational<analysis::detail::exact_limbs>;
 
 /// x^{k+1} = R(tau) x^k - x^{k-1} for L = xdot^2/2 - x^2/2 (eq. 15), R = P(s)/Q(s), s = tau^2,
 /// in lowest terms (gcd(P, Q) = 1 in Z[s], integer content 1, Q(0) > 0), and its local error
@@ -87,7 +88,7 @@ struct exact_two_step_scheme {
   friend constexpr bool operator==(const exact_two_step_scheme&, const exact_two_step_scheme&) = default;
 };
 
-namespace detail {
+namespace analysis::detail {
 
 template <int D>
 using exact_poly = integer_polynomial<exact_limbs, D>;
@@ -156,7 +157,7 @@ constexpr exact_two_step_scheme finish_two_step(int m, const exact_poly<D>& A, c
 template <class Range>
 constexpr std::int64_t denominator_lcm(const Range& values) {
   std::int64_t l = 1;
-  for (const rational& v : values) l = l / gcd64(l, v.den) * v.den;
+  for (const rational& v : values) l = l / std::gcd(l, v.den) * v.den;
   return l;
 }
 
@@ -172,7 +173,7 @@ constexpr exact_two_step_scheme lpf_two_step() {
   // Integer scales: the interior rows of D2 by L2, the momentum row D1[m] by L1; both bordered
   // determinants get the same factor L2^(m-1) L1, which cancels in R.
   std::int64_t L2 = 1;
-  for (int i = 1; i < M; ++i) L2 = L2 / gcd64(L2, denominator_lcm(D2[static_cast<std::size_t>(i)])) *
+  for (int i = 1; i < M; ++i) L2 = L2 / std::gcd(L2, denominator_lcm(D2[static_cast<std::size_t>(i)])) *
                                    denominator_lcm(D2[static_cast<std::size_t>(i)]);
   const std::int64_t L1 = denominator_lcm(D1[static_cast<std::size_t>(M)]);
   auto integer = [](const rational& v, std::int64_t scale) {
@@ -239,7 +240,7 @@ constexpr exact_two_step_scheme midpoint_two_step() {
   return finish_two_step<2>(0, A, B);
 }
 
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// The LPF scheme's exact two-step form for the harmonic oscillator (eq. 15) on an exact node
 /// family: eq. (16) for m = 2, (18) for m = 3, (19) for m = 4 (equispaced), m up to 8.
@@ -251,13 +252,13 @@ constexpr exact_two_step_scheme exact_two_step() {
   if constexpr (node_family<Family>) {
     static_assert(Family::is_rational,
                   "geomint::exact_two_step: the node family must be exact (rational nodes, e.g. equispaced)");
-    if constexpr (Family::is_rational && M >= 2 && M <= max_exact_m) return detail::lpf_two_step<M, Family>();
+    if constexpr (Family::is_rational && M >= 2 && M <= max_exact_m) return analysis::detail::lpf_two_step<M, Family>();
   }
   return {};
 }
 
 /// The midpoint variational integrator's exact two-step form: eq. (17), R = (8 - 2s)/(4 + s).
-constexpr exact_two_step_scheme exact_midpoint_two_step() { return detail::midpoint_two_step(); }
+constexpr exact_two_step_scheme exact_midpoint_two_step() { return analysis::detail::midpoint_two_step(); }
 
 /// The results as constexpr variables (each evaluated once per program).
 template <int M, class Family = equispaced>

@@ -46,7 +46,7 @@ struct linear_stability_result {
   friend constexpr bool operator==(const linear_stability_result&, const linear_stability_result&) = default;
 };
 
-namespace detail {
+namespace analysis::detail {
 
 /// Polynomials in z with exact rational coefficients (degree bound 2 max_stability_degree + 2).
 struct qpoly {
@@ -162,28 +162,28 @@ constexpr stability_integer factorial(int n) {
   return f;
 }
 
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// The exact two-step form, order of R, phase lag of a tableau.
 constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
-  using detail::qpoly;
-  const qpoly D = detail::bordered_determinant(t, false, t.one, t.b);
-  const qpoly E_bbar_one = detail::bordered_determinant(t, true, t.one, t.bbar);
-  const qpoly E_bbar_c = detail::bordered_determinant(t, true, t.c, t.bbar);
-  const qpoly E_b_one = detail::bordered_determinant(t, true, t.one, t.b);
-  const qpoly E_b_c = detail::bordered_determinant(t, true, t.c, t.b);
+  using analysis::detail::qpoly;
+  const qpoly D = analysis::detail::bordered_determinant(t, false, t.one, t.b);
+  const qpoly E_bbar_one = analysis::detail::bordered_determinant(t, true, t.one, t.bbar);
+  const qpoly E_bbar_c = analysis::detail::bordered_determinant(t, true, t.c, t.bbar);
+  const qpoly E_b_one = analysis::detail::bordered_determinant(t, true, t.one, t.b);
+  const qpoly E_b_c = analysis::detail::bordered_determinant(t, true, t.c, t.b);
   // tr M = (2 D + z (E(bbar, 1) + E(b, c))) / D.
-  const qpoly trace_num = D + D + detail::z_times(E_bbar_one + E_b_c);
+  const qpoly trace_num = D + D + analysis::detail::z_times(E_bbar_one + E_b_c);
   // det M D^2 = (D + z E(bbar,1)) (D + z E(b,c)) - (D + z E(bbar,c)) z E(b,1).
-  const qpoly det_num = (D + detail::z_times(E_bbar_one)) * (D + detail::z_times(E_b_c)) -
-                        (D + detail::z_times(E_bbar_c)) * detail::z_times(E_b_one);
+  const qpoly det_num = (D + analysis::detail::z_times(E_bbar_one)) * (D + analysis::detail::z_times(E_b_c)) -
+                        (D + analysis::detail::z_times(E_bbar_c)) * analysis::detail::z_times(E_b_one);
   linear_stability_result out;
   out.determinant_is_one = (det_num - D * D).degree < 0;
 
-  stability_integer scale = detail::lcm_of_denominators(trace_num, stability_integer(1));
-  scale = detail::lcm_of_denominators(D, scale);
-  stability_polynomial P = detail::integer_part_scaled(trace_num, scale);
-  stability_polynomial Q = detail::integer_part_scaled(D, scale);
+  stability_integer scale = analysis::detail::lcm_of_denominators(trace_num, stability_integer(1));
+  scale = analysis::detail::lcm_of_denominators(D, scale);
+  stability_polynomial P = analysis::detail::integer_part_scaled(trace_num, scale);
+  stability_polynomial Q = analysis::detail::integer_part_scaled(D, scale);
   const stability_polynomial G = polynomial_gcd(P, Q);
   if (G.degree > 0) {
     P = exact_quotient(P, G);
@@ -203,7 +203,7 @@ constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
   // the coefficient of z^k of P - Q 2 cos; the first nonzero one gives c = E_k / ((2k)! Q_0).
   const int last = P.degree + Q.degree + 1;
   for (int k = 0; k <= last; ++k) {
-    stability_integer E = k <= P.degree ? detail::factorial(2 * k) * P[k] : stability_integer(0);
+    stability_integer E = k <= P.degree ? analysis::detail::factorial(2 * k) * P[k] : stability_integer(0);
     for (int i = 0; i <= k && i <= Q.degree; ++i) {
       stability_integer ratio(2);
       for (int f = 2 * (k - i) + 1; f <= 2 * k; ++f) ratio *= stability_integer(f);
@@ -212,7 +212,7 @@ constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
     }
     if (!E.is_zero()) {
       out.order = 2 * k - 2;
-      out.leading_coefficient = exact_number(E, detail::factorial(2 * k) * Q[0]);
+      out.leading_coefficient = exact_number(E, analysis::detail::factorial(2 * k) * Q[0]);
       out.phase_lag_order = out.order;
       out.phase_lag_constant = out.leading_coefficient / exact_number(2);
       return out;

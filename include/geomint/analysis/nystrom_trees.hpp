@@ -55,7 +55,7 @@ struct nystrom_tree_table {
   constexpr int count(int n) const { return first[static_cast<std::size_t>(n) + 1] - first[static_cast<std::size_t>(n)]; }
 };
 
-namespace detail {
+namespace analysis::detail {
 constexpr int son_size(const std::vector<nystrom_tree>& trees, int son) {
   return son == 0 ? 1 : 1 + trees[static_cast<std::size_t>(son - 1)].size;
 }
@@ -67,7 +67,7 @@ constexpr std::int64_t son_gamma(const std::vector<nystrom_tree>& trees, int son
 constexpr std::int64_t son_sigma(const std::vector<nystrom_tree>& trees, int son) {
   return son == 0 ? 1 : trees[static_cast<std::size_t>(son - 1)].sigma;
 }
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// Adds the trees of size max_size + 1 to a table holding all trees up to max_size (an empty
 /// table gets the root alone), so that evaluations generate only the sizes they reach.
@@ -84,7 +84,7 @@ constexpr void extend_nystrom_trees(nystrom_tree_table& t) {
   // sons in increasing order: the leaf, then meagre-over-w for every tree w of size <= n - 2
   const int sons = 1 + t.first[static_cast<std::size_t>(n - 1)];
   for (int son = 0; son < sons; ++son) {
-    const int k = detail::son_size(t.trees, son);
+    const int k = analysis::detail::son_size(t.trees, son);
     if (k > n - 1) continue;
     const int m = n - k;  // size of u'
     const int lo = t.first[static_cast<std::size_t>(m)];
@@ -98,8 +98,8 @@ constexpr void extend_nystrom_trees(nystrom_tree_table& t) {
       u.son = son;
       u.son_multiplicity = rest.son == son ? rest.son_multiplicity + 1 : 1;
       // gamma(u) / |u| = prod gamma(sons)
-      u.gamma = n * ((rest.gamma / rest.size) * detail::son_gamma(t.trees, son));
-      u.sigma = rest.sigma * u.son_multiplicity * detail::son_sigma(t.trees, son);
+      u.gamma = n * ((rest.gamma / rest.size) * analysis::detail::son_gamma(t.trees, son));
+      u.sigma = rest.sigma * u.son_multiplicity * analysis::detail::son_sigma(t.trees, son);
       t.trees.push_back(u);
     }
   }

@@ -50,7 +50,7 @@ struct order_summary {
   friend constexpr bool operator==(const order_summary&, const order_summary&) = default;
 };
 
-namespace detail {
+namespace analysis::detail {
 
 /// Evaluates the order conditions order by order up to `max_order` (<= 17). With
 /// `stop_at_first_failure` only the order is determined (the first nonzero defect ends the
@@ -127,23 +127,23 @@ constexpr order_summary evaluate_order_conditions(const exact_rkn_tableau& t, in
   return out;
 }
 
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// The order of a tableau by the tree conditions, evaluating up to order max_order (the result
 /// is max_order when every condition up to it holds). Stops at the first nonzero defect.
 constexpr int tree_order(const exact_rkn_tableau& t, int max_order = max_nystrom_tree_size) {
-  return detail::evaluate_order_conditions(t, max_order, true, nullptr).order;
+  return analysis::detail::evaluate_order_conditions(t, max_order, true, nullptr).order;
 }
 
 /// Order, number of nonzero defects and principal error constant (squared) at order p + 1.
 constexpr order_summary order_analysis(const exact_rkn_tableau& t, int max_order = max_nystrom_tree_size) {
-  return detail::evaluate_order_conditions(t, max_order, false, nullptr);
+  return analysis::detail::evaluate_order_conditions(t, max_order, false, nullptr);
 }
 
 /// The same with the list of nonzero defects at order p + 1 (run time or constant evaluation).
 inline order_summary order_analysis(const exact_rkn_tableau& t, std::vector<tree_defect>& defects,
                                     int max_order = max_nystrom_tree_size) {
-  return detail::evaluate_order_conditions(t, max_order, false, &defects);
+  return analysis::detail::evaluate_order_conditions(t, max_order, false, &defects);
 }
 
 /// Quadrature order of the weights b on the nodes: the largest k with b(c^j) = 1/(j + 1) for

@@ -19,10 +19,11 @@
 
 #include <Eigen/Dense>
 
+#include "geomint/linalg/types.hpp"
+
 namespace geomint::analysis {
 
-template <class T>
-using dynamic_vector = Eigen::Matrix<T, Eigen::Dynamic, 1>;
+using geomint::dynamic_vector;
 
 /// One step (q, p) -> (q1, p1) of size tau; returns false (or throws) on failure.
 template <class T>

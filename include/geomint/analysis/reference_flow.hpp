@@ -117,9 +117,9 @@ class reference_flow {
 
   /// Starts at (q0, p0); the velocity is recovered from p0 (inverse Legendre transform).
   reference_flow(const V& q0, const V& p0, const Sys& sys = Sys{}) : sys_(sys), q_(q0) {
-    if (!geomint::detail::all_finite(q0) || !geomint::detail::all_finite(p0))
+    if (!geomint::all_finite(q0) || !geomint::all_finite(p0))
       throw std::invalid_argument("geomint::reference_flow: non-finite initial state");
-    if (!geomint::detail::derivatives<Sys, T>::velocity(sys_, q0, p0, v_))
+    if (!geomint::lagrangian_derivatives<Sys, T>::velocity(sys_, q0, p0, v_))
       throw std::invalid_argument("geomint::reference_flow: cannot recover the velocity from p0");
     using std::log;
     order_ = std::max<std::size_t>(8, static_cast<std::size_t>(-log(std::numeric_limits<T>::epsilon()) / T(2)) + 2);
@@ -133,7 +133,7 @@ class reference_flow {
 
   /// Advances to t_end >= time().
   void advance_to(const T& t_end) {
-    if (!geomint::detail::is_finite(t_end) || t_end < t_) throw std::invalid_argument("geomint::reference_flow: bad end time");
+    if (!geomint::is_finite(t_end) || t_end < t_) throw std::invalid_argument("geomint::reference_flow: bad end time");
     using std::abs;
     using std::pow;
     const T eps = std::numeric_limits<T>::epsilon();
@@ -152,7 +152,7 @@ class reference_flow {
         qn = qn * h + qc_[j];
         vn = vn * h + vc_[j];
       }
-      if (!geomint::detail::all_finite(qn) || !geomint::detail::all_finite(vn))
+      if (!geomint::all_finite(qn) || !geomint::all_finite(vn))
         throw std::runtime_error("geomint::reference_flow: the Taylor series diverged");
       q_ = qn;
       v_ = vn;

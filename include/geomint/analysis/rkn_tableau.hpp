@@ -50,10 +50,10 @@ inline constexpr int exact_algebra_limbs = 16;
 /// The exact numbers of the scheme algebra.
 using exact_number = big_rational<exact_algebra_limbs>;
 
-namespace detail {
+namespace analysis::detail {
 /// n / d as an exact number.
 constexpr exact_number fraction(std::int64_t n, std::int64_t d) { return exact_number(rational(n, d)); }
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// How stage vectors are represented.
 enum class stage_basis {
@@ -149,7 +149,7 @@ struct exact_rkn_tableau {
   friend constexpr bool operator==(const exact_rkn_tableau&, const exact_rkn_tableau&) = default;
 };
 
-namespace detail {
+namespace analysis::detail {
 
 /// Polynomial coefficients (ascending) of up to degree 2 max_exact_stages + 2.
 struct exact_poly_buffer {
@@ -169,11 +169,11 @@ constexpr exact_rkn_tableau collocation_tableau(const exact_number* monic_n, int
   for (int k = 0; k < s; ++k) {
     // x^k -> int_0^x (x - u) u^k du = x^{k+2} / ((k+1)(k+2)), reduced modulo N.
     exact_number p[2 * max_exact_stages + 2];
-    p[k + 2] = detail::fraction(1, (k + 1) * (k + 2));
+    p[k + 2] = analysis::detail::fraction(1, (k + 1) * (k + 2));
     t.reduce(p, k + 2);
     for (int i = 0; i < s; ++i) t.a[i][k] = p[i];
-    t.b[k] = detail::fraction(1, k + 1);
-    t.bbar[k] = detail::fraction(1, (k + 1) * (k + 2));
+    t.b[k] = analysis::detail::fraction(1, k + 1);
+    t.bbar[k] = analysis::detail::fraction(1, (k + 1) * (k + 2));
   }
   t.one[0] = exact_number(1);
   if (s == 1) {
@@ -194,10 +194,10 @@ constexpr exact_rkn_tableau galerkin_tableau(const exact_number* monic_n, int s)
   exact_number rk[max_exact_stages][max_exact_stages];
   for (int k = 0; k < s; ++k) {
     exact_number p[2 * max_exact_stages + 2];
-    p[k + 1] = detail::fraction(1, k + 1);
+    p[k + 1] = analysis::detail::fraction(1, k + 1);
     t.reduce(p, k + 1);
     for (int i = 0; i < s; ++i) rk[i][k] = p[i];
-    t.b[k] = detail::fraction(1, k + 1);
+    t.b[k] = analysis::detail::fraction(1, k + 1);
   }
   for (int i = 0; i < s; ++i)
     for (int j = 0; j < s; ++j) {
@@ -290,7 +290,7 @@ constexpr exact_poly_buffer interior_node_polynomial() {
   return p;
 }
 
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// The exact RKN tableau of LPF of degree m on a node family (collocation on the interior nodes).
 template <int M, class Family = equispaced>
@@ -299,8 +299,8 @@ constexpr exact_rkn_tableau lpf_tableau() {
                 "geomint::lpf_tableau: Family must be equispaced, gauss_lobatto, chebyshev_lobatto or gauss_interior");
   static_assert(M >= 2 && M <= max_exact_m, "geomint::lpf_tableau: m must be in 2..8");
   if constexpr (node_family<Family> && M >= 2 && M <= max_exact_m) {
-    const auto n = detail::interior_node_polynomial<Family, M>();
-    return detail::collocation_tableau(n.c, M - 1);
+    const auto n = analysis::detail::interior_node_polynomial<Family, M>();
+    return analysis::detail::collocation_tableau(n.c, M - 1);
   } else {
     return {};
   }
@@ -311,10 +311,10 @@ template <int M>
 constexpr exact_rkn_tableau galerkin_tableau() {
   static_assert(M >= 1 && M <= max_exact_stages, "geomint::galerkin_tableau: m must be in 1..8");
   if constexpr (M >= 1 && M <= max_exact_stages) {
-    detail::exact_poly_buffer n;
-    detail::shifted_orthogonal(detail::orthogonal_kind::legendre, M, n.c);
-    detail::make_monic(n.c, M);
-    return detail::galerkin_tableau(n.c, M);
+    analysis::detail::exact_poly_buffer n;
+    analysis::detail::shifted_orthogonal(analysis::detail::orthogonal_kind::legendre, M, n.c);
+    analysis::detail::make_monic(n.c, M);
+    return analysis::detail::galerkin_tableau(n.c, M);
   } else {
     return {};
   }
@@ -351,7 +351,7 @@ constexpr exact_rkn_tableau trapezoidal_tableau() {
 template <int S>
 constexpr exact_rkn_tableau collocation_tableau_from_nodes(const std::array<rational, S>& nodes) {
   static_assert(S >= 1 && S <= max_exact_stages, "geomint::collocation_tableau_from_nodes: 1..8 nodes");
-  detail::exact_poly_buffer p;
+  analysis::detail::exact_poly_buffer p;
   p.c[0] = exact_number(1);
   for (int i = 0; i < S; ++i) {
     for (int j = 0; j < i; ++j)
@@ -360,7 +360,7 @@ constexpr exact_rkn_tableau collocation_tableau_from_nodes(const std::array<rati
     const exact_number root(nodes[static_cast<std::size_t>(i)]);
     for (int k = i + 1; k >= 0; --k) p.c[k] = (k >= 1 ? p.c[k - 1] : exact_number(0)) - root * p.c[k];
   }
-  return detail::collocation_tableau(p.c, S);
+  return analysis::detail::collocation_tableau(p.c, S);
 }
 
 /// Collocation tableau on the roots of a node polynomial with rational coefficients
@@ -368,10 +368,10 @@ constexpr exact_rkn_tableau collocation_tableau_from_nodes(const std::array<rati
 template <int S>
 constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array<rational, S + 1>& coefficients) {
   static_assert(S >= 1 && S <= max_exact_stages, "geomint::collocation_tableau_from_polynomial: degree 1..8");
-  detail::exact_poly_buffer p;
+  analysis::detail::exact_poly_buffer p;
   for (int k = 0; k <= S; ++k) p.c[k] = exact_number(coefficients[static_cast<std::size_t>(k)]);
   if (p.c[S].num.is_zero()) throw std::domain_error("geomint::collocation_tableau_from_polynomial: the leading coefficient is zero");
-  detail::make_monic(p.c, S);
+  analysis::detail::make_monic(p.c, S);
   // Simple roots: the Euclidean remainder sequence of N and N' ends in a nonzero constant.
   exact_number u[max_exact_stages + 1], w[max_exact_stages + 1];
   int du = S, dw = S - 1;
@@ -394,7 +394,7 @@ constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array
     du = dw;
     dw = t;
   }
-  return detail::collocation_tableau(p.c, S);
+  return analysis::detail::collocation_tableau(p.c, S);
 }
 
 /// The usual numeric tableau (c_i, a_ij, bbar_j, b_j) in a scalar type T.
@@ -406,7 +406,7 @@ struct numeric_rkn_tableau {
   std::array<T, max_exact_stages> bbar{}, b{};
 };
 
-namespace detail {
+namespace analysis::detail {
 template <class T>
 T to_scalar(const exact_number& x) {
   return T(x.num.str()) / T(x.den.str());
@@ -416,7 +416,7 @@ template <class T>
 T to_scalar(const exact_number& x) {
   return static_cast<T>(std::stold(x.num.str())) / static_cast<T>(std::stold(x.den.str()));
 }
-}  // namespace detail
+}  // namespace analysis::detail
 
 /// Values-basis tableau from the exact one: for the monomial basis, with V_ik = c_i^k at the
 /// numerically computed nodes c (ascending), a = V A V^{-1}, bbar = bbar V^{-1}, b = b V^{-1}.
@@ -428,13 +428,13 @@ numeric_rkn_tableau<T> numeric_tableau(const exact_rkn_tableau& t, const T* node
   out.stages = s;
   T A[max_exact_stages][max_exact_stages], bb[max_exact_stages], b[max_exact_stages];
   for (int i = 0; i < s; ++i) {
-    for (int j = 0; j < s; ++j) A[i][j] = detail::to_scalar<T>(t.a[i][j]);
-    bb[i] = detail::to_scalar<T>(t.bbar[i]);
-    b[i] = detail::to_scalar<T>(t.b[i]);
+    for (int j = 0; j < s; ++j) A[i][j] = analysis::detail::to_scalar<T>(t.a[i][j]);
+    bb[i] = analysis::detail::to_scalar<T>(t.bbar[i]);
+    b[i] = analysis::detail::to_scalar<T>(t.b[i]);
   }
   if (t.basis == stage_basis::values) {
     for (int i = 0; i < s; ++i) {
-      out.c[static_cast<std::size_t>(i)] = detail::to_scalar<T>(t.c[i]);
+      out.c[static_cast<std::size_t>(i)] = analysis::detail::to_scalar<T>(t.c[i]);
       out.bbar[static_cast<std::size_t>(i)] = bb[i];
       out.b[static_cast<std::size_t>(i)] = b[i];
       for (int j = 0; j < s; ++j) out.a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = A[i][j];

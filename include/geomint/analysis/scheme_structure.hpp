@@ -82,7 +82,7 @@ constexpr symplecticity_result symplecticity(const exact_rkn_tableau& t) {
   return r;
 }
 
-namespace detail {
+namespace analysis::detail {
 /// The stage permutation c -> 1 - c as a matrix on the tableau's basis; false if none exists.
 constexpr bool reflection_matrix(const exact_rkn_tableau& t, exact_number (&P)[max_exact_stages][max_exact_stages]) {
   const int s = t.stages;
@@ -121,13 +121,13 @@ constexpr bool reflection_matrix(const exact_rkn_tableau& t, exact_number (&P)[m
   }
   return true;
 }
-}  // namespace detail
+}  // namespace analysis::detail
 
 constexpr symmetry_result symmetry(const exact_rkn_tableau& t) {
   symmetry_result r;
   const int s = t.stages;
   exact_number P[max_exact_stages][max_exact_stages];
-  r.nodes_symmetric = detail::reflection_matrix(t, P);
+  r.nodes_symmetric = analysis::detail::reflection_matrix(t, P);
   if (!r.nodes_symmetric) return r;
   auto matrix_times = [s](const exact_number (&X)[max_exact_stages][max_exact_stages],
                           const exact_number (&Y)[max_exact_stages][max_exact_stages],

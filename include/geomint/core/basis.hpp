@@ -102,7 +102,7 @@ constexpr basis_polynomials<T, M> basis_polynomials_of() {
     return bernstein_basis<M, T>();
 }
 
-namespace detail {
+namespace core::detail {
 /// b_{a,n}(t) evaluated directly as C(n,a) t^a (1-t)^(n-a) (all terms positive on [0,1]).
 template <class T>
 constexpr T bernstein_value(int a, int n, const T& t) {
@@ -113,7 +113,7 @@ constexpr T bernstein_value(int a, int n, const T& t) {
   for (int i = 0; i < n - a; ++i) value *= one_minus_t;
   return value;
 }
-}  // namespace detail
+}  // namespace core::detail
 
 /// k-th derivatives of all basis functions at t: out[j] = phi_j^(k)(t), any k >= 0.
 /// Bernstein uses the stable difference form
@@ -132,7 +132,7 @@ constexpr std::array<T, M + 1> basis_derivatives(const T& t) {
     for (int j = 0; j <= M; ++j) {
       T sum(0);
       for (int i = 0; i <= K; ++i) {
-        const T term = T(binomial(K, i)) * detail::bernstein_value<T>(j - i, M - K, t);
+        const T term = T(binomial(K, i)) * core::detail::bernstein_value<T>(j - i, M - K, t);
         if ((K - i) % 2 == 0)
           sum += term;
         else

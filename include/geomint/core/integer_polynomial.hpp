@@ -100,7 +100,6 @@ constexpr integer_polynomial<L, D> primitive_part(integer_polynomial<L, D> a) {
   return a;
 }
 
-namespace detail {
 
 /// a mod p for a one-limb prime p, in [0, p).
 template <int L>
@@ -152,7 +151,6 @@ constexpr int gcd_degree_mod(const integer_polynomial<L, D>& a, const integer_po
   return du;
 }
 
-}  // namespace detail
 
 /// gcd in Z[s], primitive, positive leading coefficient. A coprimality certificate modulo a
 /// 31-bit prime not dividing both leading coefficients settles the usual case cheaply (the
@@ -163,8 +161,8 @@ constexpr int gcd_degree_mod(const integer_polynomial<L, D>& a, const integer_po
 template <int L, int D>
 constexpr integer_polynomial<L, D> polynomial_gcd(const integer_polynomial<L, D>& a, const integer_polynomial<L, D>& b) {
   for (std::uint32_t p : {2147483647U, 2147483629U, 2147483587U}) {
-    if (detail::residue(a.lead(), p) == 0 || detail::residue(b.lead(), p) == 0) continue;
-    if (detail::gcd_degree_mod(a, b, p) == 0) return integer_polynomial<L, D>(big_integer<L>(1));
+    if (residue(a.lead(), p) == 0 || residue(b.lead(), p) == 0) continue;
+    if (gcd_degree_mod(a, b, p) == 0) return integer_polynomial<L, D>(big_integer<L>(1));
     break;
   }
   integer_polynomial<L, D> u = primitive_part(a), v = primitive_part(b);

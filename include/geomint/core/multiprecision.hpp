@@ -21,17 +21,34 @@ template <class Backend, boost::multiprecision::expression_template_option ET>
 struct eigen_scalar_ready<boost::multiprecision::number<Backend, ET>> : std::true_type {};
 }  // namespace geomint
 
-namespace geomint::detail {
+namespace geomint::core::detail {
 template <class Traits>
 concept eigen_traits_have_infinity = requires { Traits::infinity(); Traits::quiet_NaN(); };
-}  // namespace geomint::detail
+}  // namespace geomint::core::detail
 
 namespace Eigen::internal {
 template <class Backend, boost::multiprecision::expression_template_option ET>
-  requires(!geomint::detail::eigen_traits_have_infinity<NumTraits<boost::multiprecision::number<Backend, ET>>>)
+  requires(!geomint::core::detail::eigen_traits_have_infinity<NumTraits<boost::multiprecision::number<Backend, ET>>>)
 struct hypot_impl<boost::multiprecision::number<Backend, ET>> {
   using Scalar = boost::multiprecision::number<Backend, ET>;
   using RealScalar = typename NumTraits<Scalar>::Real;
   static RealScalar run(const Scalar& x, const Scalar& y) { return RealScalar(hypot(x, y)); }
 };
 }  // namespace Eigen::internal
+
+#include <cstdlib>
+#include <type_traits>
+
+namespace geomint {
+
+/// A decimal constant read in the precision of T: strtof/strtod/strtold for the built-in types
+/// (correctly rounded), the multiprecision type's own parser otherwise. Never through double.
+template <class T>
+T from_decimal(const char* text) {
+  if constexpr (std::is_same_v<T, float>) return std::strtof(text, nullptr);
+  else if constexpr (std::is_same_v<T, double>) return std::strtod(text, nullptr);
+  else if constexpr (std::is_floating_point_v<T>) return static_cast<T>(std::strtold(text, nullptr));
+  else return T(text);
+}
+
+}  // namespace geomint

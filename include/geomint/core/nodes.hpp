@@ -69,7 +69,7 @@ constexpr void check_node_parameters() {
   static_assert(M <= max_floating_m, "geomint: m must be <= max_floating_m (16)");
 }
 
-namespace detail {
+namespace core::detail {
 
 template <class T>
 constexpr T abs_value(const T& x) {
@@ -181,9 +181,9 @@ constexpr T polish_root(T lo, T hi) {
   throw std::runtime_error("geomint: node root-finding did not converge");
 }
 
-}  // namespace detail
+}  // namespace core::detail
 
-namespace detail {
+namespace core::detail {
 
 /// The node set without the range checks of `nodes` (also serves the Gauss rule with m + 1
 /// = max_floating_m + 1 points, core/quadrature.hpp).
@@ -222,14 +222,14 @@ constexpr std::array<T, M + 1> node_set() {
   return c;
 }
 
-}  // namespace detail
+}  // namespace core::detail
 
 /// The m+1 nodes of a family on [0, 1], ascending. constexpr for rational (equispaced),
 /// double and long double; any Boost.Multiprecision type at run time, to full precision.
 template <class Family, int M, class T = double>
 constexpr std::array<T, M + 1> nodes() {
   check_node_parameters<Family, M, T>();
-  return detail::node_set<Family, M, T>();
+  return core::detail::node_set<Family, M, T>();
 }
 
 /// The nodes as a constexpr variable (rational, double, long double).

@@ -93,18 +93,18 @@ struct polynomial {
   }
 };
 
-namespace detail {
+namespace core::detail {
 constexpr int max_int(int a, int b) { return a > b ? a : b; }
-}  // namespace detail
+}  // namespace core::detail
 
 template <class T, int N, int M>
-constexpr polynomial<T, detail::max_int(N, M)> operator+(const polynomial<T, N>& p, const polynomial<T, M>& q) {
-  polynomial<T, detail::max_int(N, M)> out = p.template widen<detail::max_int(N, M)>();
+constexpr polynomial<T, core::detail::max_int(N, M)> operator+(const polynomial<T, N>& p, const polynomial<T, M>& q) {
+  polynomial<T, core::detail::max_int(N, M)> out = p.template widen<core::detail::max_int(N, M)>();
   for (int k = 0; k <= M; ++k) out[k] += q[k];
   return out;
 }
 template <class T, int N, int M>
-constexpr polynomial<T, detail::max_int(N, M)> operator-(const polynomial<T, N>& p, const polynomial<T, M>& q) {
+constexpr polynomial<T, core::detail::max_int(N, M)> operator-(const polynomial<T, N>& p, const polynomial<T, M>& q) {
   return p + (-q);
 }
 template <class T, int N, int M>
@@ -130,7 +130,7 @@ constexpr polynomial<T, N> operator/(polynomial<T, N> p, const T& c) {
 /// Exact equality of the represented polynomials (bounds may differ; missing terms are 0).
 template <class T, int N, int M>
 constexpr bool operator==(const polynomial<T, N>& p, const polynomial<T, M>& q) {
-  for (int k = 0; k <= detail::max_int(N, M); ++k) {
+  for (int k = 0; k <= core::detail::max_int(N, M); ++k) {
     const T a = k <= N ? p[k] : T(0);
     const T b = k <= M ? q[k] : T(0);
     if (!(a == b)) return false;

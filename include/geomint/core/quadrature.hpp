@@ -27,11 +27,11 @@ constexpr quadrature_rule<T, Q> gauss_legendre_rule() {
   static_assert(Q >= 1, "geomint::gauss_legendre_rule: Q must be >= 1");
   static_assert(Q <= max_floating_m, "geomint::gauss_legendre_rule: Q must be <= max_floating_m (16)");
   static_assert(!std::is_same_v<T, rational>, "geomint::gauss_legendre_rule: Gauss points are irrational");
-  const auto c = detail::node_set<gauss_interior, Q + 1, T>();
+  const auto c = core::detail::node_set<gauss_interior, Q + 1, T>();
   quadrature_rule<T, Q> rule;
   for (int k = 0; k < Q; ++k) {
     const T g = c[static_cast<std::size_t>(k + 1)];
-    const T dp = detail::legendre_at<T>(Q, g).dp;
+    const T dp = core::detail::legendre_at<T>(Q, g).dp;
     rule.points[static_cast<std::size_t>(k)] = g;
     rule.weights[static_cast<std::size_t>(k)] = T(1) / (T(4) * g * (T(1) - g) * dp * dp);
   }

@@ -18,7 +18,7 @@
 
 namespace geomint {
 
-namespace detail {
+namespace core::detail {
 __extension__ using int128 = __int128;
 
 constexpr int128 abs128(int128 x) { return x < 0 ? -x : x; }
@@ -58,7 +58,7 @@ constexpr int128 add128(int128 a, int128 b) {
   if (__builtin_add_overflow(a, b, &out)) throw std::overflow_error("geomint::rational overflow");
   return out;
 }
-}  // namespace detail
+}  // namespace core::detail
 
 struct rational {
   std::int64_t num = 0;  ///< numerator, carries the sign
@@ -72,7 +72,7 @@ struct rational {
   template <std::integral Int>
     requires(!std::is_same_v<Int, bool>)
   constexpr rational(Int n) {  // NOLINT(google-explicit-constructor)
-    *this = narrow(static_cast<detail::int128>(n), 1);
+    *this = narrow(static_cast<core::detail::int128>(n), 1);
   }
   /// n/d for integers of any integer types, reduced; d = 0 throws std::domain_error and a
   /// reduced value outside the 64-bit range throws std::overflow_error (compile errors in a
@@ -80,7 +80,7 @@ struct rational {
   template <std::integral N, std::integral D>
     requires(!std::is_same_v<N, bool> && !std::is_same_v<D, bool>)
   constexpr rational(N n, D d) {
-    *this = from_wide(static_cast<detail::int128>(n), static_cast<detail::int128>(d));
+    *this = from_wide(static_cast<core::detail::int128>(n), static_cast<core::detail::int128>(d));
   }
   /// No conversion from floating point: `rational r = 0.5;` does not compile (it would have
   /// converted 0.5 to the integer 0). Write rational(1, 2), or from_double() for the exact
@@ -110,16 +110,16 @@ struct rational {
       --exponent;
       if (exponent < -62) throw std::overflow_error("geomint::rational overflow");
     }
-    detail::int128 n = static_cast<std::int64_t>(m), d = 1;
+    core::detail::int128 n = static_cast<std::int64_t>(m), d = 1;
     for (; exponent > 0; --exponent) n *= 2;
     for (; exponent < 0; ++exponent) d *= 2;
     return from_wide(negative ? -n : n, d);
   }
 
   /// A fraction already in lowest terms with a positive denominator; checks that it fits.
-  static constexpr rational narrow(detail::int128 n, detail::int128 d) {
-    constexpr detail::int128 lo = std::numeric_limits<std::int64_t>::min() + 1;
-    constexpr detail::int128 hi = std::numeric_limits<std::int64_t>::max();
+  static constexpr rational narrow(core::detail::int128 n, core::detail::int128 d) {
+    constexpr core::detail::int128 lo = std::numeric_limits<std::int64_t>::min() + 1;
+    constexpr core::detail::int128 hi = std::numeric_limits<std::int64_t>::max();
     if (n < lo || n > hi || d > hi) throw std::overflow_error("geomint::rational overflow");
     rational r;
     r.num = static_cast<std::int64_t>(n);
@@ -128,13 +128,13 @@ struct rational {
   }
 
   /// Reduces a 128-bit fraction and checks that it fits in 64 bits.
-  static constexpr rational from_wide(detail::int128 n, detail::int128 d) {
+  static constexpr rational from_wide(core::detail::int128 n, core::detail::int128 d) {
     if (d == 0) throw std::domain_error("geomint::rational: zero denominator");
     if (d < 0) {
       n = -n;
       d = -d;
     }
-    const detail::int128 g = detail::gcd128(n, d);
+    const core::detail::int128 g = core::detail::gcd128(n, d);
     if (g > 1) {
       n /= g;
       d /= g;
@@ -153,10 +153,10 @@ struct rational {
   /// With g = gcd(d1, d2): n1/d1 + n2/d2 = (n1 (d2/g) + n2 (d1/g)) / (d1 d2 / g), and only
   /// gcd(numerator, g) can remain to cancel (Knuth, TAOCP 4.5.1).
   friend constexpr rational operator+(rational a, rational b) {
-    const std::int64_t g = detail::gcd64(a.den, b.den);
-    const detail::int128 numerator =
-        detail::add128(detail::mul128(a.num, b.den / g), detail::mul128(b.num, a.den / g));
-    const detail::int128 denominator = detail::mul128(a.den / g, b.den);
+    const std::int64_t g = core::detail::gcd64(a.den, b.den);
+    const core::detail::int128 numerator =
+        core::detail::add128(core::detail::mul128(a.num, b.den / g), core::detail::mul128(b.num, a.den / g));
+    const core::detail::int128 denominator = core::detail::mul128(a.den / g, b.den);
     if (g == 1) return narrow(numerator, denominator);
     return from_wide(numerator, denominator);
   }
@@ -164,9 +164,9 @@ struct rational {
   /// Cross-cancellation first (Knuth, TAOCP 4.5.1): the product of reduced fractions
   /// n1 n2 / (d1 d2) is reduced once gcd(n1, d2) and gcd(n2, d1) are divided out.
   friend constexpr rational operator*(rational a, rational b) {
-    const std::int64_t g1 = detail::gcd64(a.num, b.den);
-    const std::int64_t g2 = detail::gcd64(b.num, a.den);
-    return narrow(detail::mul128(a.num / g1, b.num / g2), detail::mul128(a.den / g2, b.den / g1));
+    const std::int64_t g1 = core::detail::gcd64(a.num, b.den);
+    const std::int64_t g2 = core::detail::gcd64(b.num, a.den);
+    return narrow(core::detail::mul128(a.num / g1, b.num / g2), core::detail::mul128(a.den / g2, b.den / g1));
   }
   friend constexpr rational operator/(rational a, rational b) {
     if (b.num == 0) throw std::domain_error("geomint::rational: division by zero");
@@ -183,7 +183,7 @@ struct rational {
   /// Reduced form makes member-wise equality exact equality.
   friend constexpr bool operator==(const rational&, const rational&) = default;
   friend constexpr std::strong_ordering operator<=>(rational a, rational b) {
-    return detail::mul128(a.num, b.den) <=> detail::mul128(b.num, a.den);
+    return core::detail::mul128(a.num, b.den) <=> core::detail::mul128(b.num, a.den);
   }
 
   /// Conversion to any floating or multiprecision type: one rounding for num and den each

@@ -7,7 +7,6 @@
 #include "geomint/linalg/types.hpp"
 
 namespace geomint {
-namespace detail {
 
 /// LU factorisation with complete pivoting (P A Q = L U) of a small fixed-size matrix, kept for
 /// reuse (e.g. across Newton iterations); singular to working precision when the largest
@@ -112,5 +111,4 @@ bool invert_small(const mat<T, N>& A, mat<T, N>& inv) {
   return true;
 }
 
-}  // namespace detail
 }  // namespace geomint

@@ -22,7 +22,9 @@ template <class S>
   requires requires { typename S::backend_type; }
 struct eigen_scalar_ready<S> : std::false_type {};
 
-namespace detail {
+/// A vector whose size is known at run time only (type-erased steppers, studies).
+template <class S>
+using dynamic_vector = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 
 template <class T>
 bool is_finite(const T& x) {
@@ -37,7 +39,6 @@ bool all_finite(const Eigen::MatrixBase<Derived>& m) {
   return true;
 }
 
-}  // namespace detail
 }  // namespace geomint
 
 // Boost.Multiprecision's Eigen traits (core/multiprecision.hpp) are parsed only when

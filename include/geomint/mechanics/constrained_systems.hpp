@@ -11,6 +11,12 @@ namespace geomint::systems {
 /// A free unit-mass particle in the plane, L = 1/2 |qdot|^2 (with `unit_circle`: example 3.3).
 struct free_particle_2d : natural<free_particle_2d, 2> {
   static constexpr std::string_view name = "circle";
+  /// On the unit circle at (1, 0) with velocity (0, 1).
+  template <class T>
+  static void initial_data(vec<T, 2>& q, vec<T, 2>& qdot) {
+    q << T(1), T(0);
+    qdot << T(0), T(1);
+  }
   template <class S>
   static S potential(const vec<S, 2>&) { return S(0); }
   template <class T>
@@ -32,6 +38,14 @@ struct unit_circle {
 /// L = 1/2 |qdot|^2 - z, f = |q|^2 - 1.
 struct spherical_pendulum : natural<spherical_pendulum, 3> {
   static constexpr std::string_view name = "spherical";
+  /// 45 degrees from the downward vertical, (sin, 0, -cos)(pi/4), with velocity (0, 4/5, 0).
+  template <class T>
+  static void initial_data(vec<T, 3>& q, vec<T, 3>& qdot) {
+    using std::sqrt;
+    const T r = sqrt(T(1) / T(2));
+    q << r, T(0), -r;
+    qdot << T(0), T(4) / T(5), T(0);
+  }
   template <class S>
   static S potential(const vec<S, 3>& q) { return q[2]; }
   template <class T>

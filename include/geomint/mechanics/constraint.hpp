@@ -19,7 +19,6 @@ concept holonomic_constraints = requires { Con::count; } && (Con::count >= 1) &&
       { f(q) } -> std::convertible_to<vec<double, Con::count>>;
     };
 
-namespace detail {
 
 /// f, G = df/dq and (optionally) the Hessians H_l = d^2 f_l / dq^2 at q.
 template <class Con, class T, int n>
@@ -69,7 +68,6 @@ struct constraint_derivatives {
   }
 };
 
-}  // namespace detail
 
 /// The largest |f_l(q)|: the constraint violation reported by the tools.
 template <class Con, class T, int n>

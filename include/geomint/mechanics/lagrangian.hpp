@@ -53,7 +53,7 @@ struct natural : natural_tag {
   }
 };
 
-namespace detail {
+namespace mechanics::detail {
 /// The dual types the integrators call a Lagrangian with (mechanics/lagrangian.hpp below):
 /// gradient, Hessian and Euler-Lagrange Jacobian levels of the general path.
 template <class T, int n>
@@ -140,22 +140,29 @@ constexpr bool check_system() {
     return true;
   }
 }
-}  // namespace detail
+}  // namespace mechanics::detail
 
 /// True if Sys satisfies the system contract for the scalar T (double by default); if not,
 /// compilation stops at a static_assert that names the mistake.
 template <class Sys, class T = double>
-inline constexpr bool checked_system = detail::check_system<Sys, T>();
+inline constexpr bool checked_system = mechanics::detail::check_system<Sys, T>();
+
+/// Sys::dof, or 1 where the contract check has already failed (fewer follow-on errors).
+template <class Sys>
+constexpr int contract_dof() {
+  if constexpr (mechanics::detail::has_dof<Sys>) return Sys::dof >= 1 ? Sys::dof : 1;
+  else return 1;
+}
 
 /// A Lagrangian in n = Sys::dof degrees of freedom, callable over double and the dual types.
 template <class Sys>
-concept lagrangian_system = detail::has_dof<Sys> && (Sys::dof >= 1) && detail::returns_scalar<Sys, double> &&
-                            detail::returns_scalar<Sys, detail::euler_lagrange_dual<double, Sys::dof>>;
+concept lagrangian_system = mechanics::detail::has_dof<Sys> && (Sys::dof >= 1) && mechanics::detail::returns_scalar<Sys, double> &&
+                            mechanics::detail::returns_scalar<Sys, mechanics::detail::euler_lagrange_dual<double, Sys::dof>>;
 
 /// A system declared natural (derived from geomint::natural): the fast path.
 template <class Sys>
 concept natural_system = lagrangian_system<Sys> && std::is_base_of_v<natural_tag, Sys> &&
-                         detail::static_potential<Sys, double> && detail::uses_natural_operator<Sys>;
+                         mechanics::detail::static_potential<Sys, double> && mechanics::detail::uses_natural_operator<Sys>;
 
 /// Hides the natural-system structure of Sys: derivatives then come from AD on L itself.
 template <lagrangian_system Sys>
@@ -166,7 +173,6 @@ struct general {
   S operator()(const vec<S, dof>& q, const vec<S, dof>& qdot) const { return system(q, qdot); }
 };
 
-namespace detail {
 
 /// L and its first derivatives.
 template <class T, int n>
@@ -190,7 +196,7 @@ struct el_data {
 
 /// Derivatives of a system's Lagrangian over the scalar T.
 template <class Sys, class T>
-struct derivatives {
+struct lagrangian_derivatives {
   static constexpr int n = Sys::dof;
   using V = vec<T, n>;
   using Mt = mat<T, n>;
@@ -388,18 +394,17 @@ struct derivatives {
   }
 };
 
-}  // namespace detail
 
 /// dL/dqdot at (q, qdot): the momentum p.
 template <lagrangian_system Sys, class T>
 vec<T, Sys::dof> momentum(const Sys& sys, const vec<T, Sys::dof>& q, const vec<T, Sys::dof>& qdot) {
-  return detail::derivatives<Sys, T>::gradient(sys, q, qdot).Lv;
+  return lagrangian_derivatives<Sys, T>::gradient(sys, q, qdot).Lv;
 }
 
 /// The energy (Hamiltonian) qdot . dL/dqdot - L at (q, qdot).
 template <lagrangian_system Sys, class T>
 T energy_qv(const Sys& sys, const vec<T, Sys::dof>& q, const vec<T, Sys::dof>& qdot) {
-  const auto g = detail::derivatives<Sys, T>::gradient(sys, q, qdot);
+  const auto g = lagrangian_derivatives<Sys, T>::gradient(sys, q, qdot);
   return T(qdot.dot(g.Lv) - g.L);
 }
 

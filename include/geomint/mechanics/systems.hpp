@@ -1,6 +1,7 @@
 #pragma once
 /// Built-in Lagrangian systems (LPF paper section 3).
 
+#include <cmath>
 #include <string_view>
 
 #include "geomint/mechanics/lagrangian.hpp"
@@ -10,6 +11,12 @@ namespace geomint::systems {
 /// L = 1/2 xdot^2 - 1/2 x^2 (eq. 15).
 struct harmonic : natural<harmonic, 1> {
   static constexpr std::string_view name = "harmonic";
+  /// The paper's data: x(0) = 1, xdot(0) = 1 (section 3.1).
+  template <class T>
+  static void initial_data(vec<T, 1>& q, vec<T, 1>& qdot) {
+    q[0] = T(1);
+    qdot[0] = T(1);
+  }
   template <class S>
   static S potential(const vec<S, 1>& q) { return q[0] * q[0] / S(2); }
   template <class T>
@@ -19,6 +26,12 @@ struct harmonic : natural<harmonic, 1> {
 /// L = 1/2 thetadot^2 - (1 - cos theta) (eq. 20).
 struct pendulum : natural<pendulum, 1> {
   static constexpr std::string_view name = "pendulum";
+  /// theta(0) = 1 at rest.
+  template <class T>
+  static void initial_data(vec<T, 1>& q, vec<T, 1>& qdot) {
+    q[0] = T(1);
+    qdot[0] = T(0);
+  }
   template <class S>
   static S potential(const vec<S, 1>& q) {
     using std::cos;
@@ -32,6 +45,13 @@ struct pendulum : natural<pendulum, 1> {
 /// angular momentum q x p is the Noether quantity.
 struct kepler : natural<kepler, 2> {
   static constexpr std::string_view name = "kepler";
+  /// Eccentricity 1/2, semi-major axis 1, at pericentre: q = (1/2, 0), qdot = (0, sqrt 3).
+  template <class T>
+  static void initial_data(vec<T, 2>& q, vec<T, 2>& qdot) {
+    using std::sqrt;
+    q << T(1) / T(2), T(0);
+    qdot << T(0), T(sqrt(T(3)));
+  }
   template <class S>
   static S potential(const vec<S, 2>& q) {
     using std::sqrt;
@@ -52,6 +72,12 @@ struct kepler : natural<kepler, 2> {
 struct charged {
   static constexpr int dof = 2;
   static constexpr std::string_view name = "charged";
+  /// q = (1, 0), qdot = (0, 1).
+  template <class T>
+  static void initial_data(vec<T, 2>& q, vec<T, 2>& qdot) {
+    q << T(1), T(0);
+    qdot << T(0), T(1);
+  }
   template <class S>
   S operator()(const vec<S, 2>& q, const vec<S, 2>& v) const {
     const S r2 = q[0] * q[0] + q[1] * q[1];

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "geomint/core/multiprecision.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
 
 namespace geomint::zoo {
@@ -28,22 +29,14 @@ struct base_scalar {
   using type = S;
 };
 template <class T, int N>
-struct base_scalar<geomint::detail::dual<T, N>> {
+struct base_scalar<geomint::dual<T, N>> {
   using type = typename base_scalar<T>::type;
 };
 
-/// A decimal constant read in the precision of S (strtod for built-in types, the
-/// multiprecision type's own parser otherwise).
+/// A decimal constant in the precision of S (a scalar or a nested dual over it).
 template <class S>
 S decimal(const char* text) {
-  using B = typename base_scalar<S>::type;
-  if constexpr (std::is_floating_point_v<B>) {
-    if constexpr (std::is_same_v<B, float>) return S(std::strtof(text, nullptr));
-    else if constexpr (std::is_same_v<B, double>) return S(std::strtod(text, nullptr));
-    else return S(std::strtold(text, nullptr));
-  } else {
-    return S(B(text));
-  }
+  return S(from_decimal<typename base_scalar<S>::type>(text));
 }
 
 }  // namespace detail

@@ -16,7 +16,7 @@
 #include "geomint/schemes/step_skeleton.hpp"
 
 namespace geomint {
-namespace detail {
+namespace schemes::detail {
 
 /// One Galerkin step as a method of the step skeleton: a degree-M path q + sum_j phi_j Y_j
 /// (controls on a node family in a basis), the action by a Q-point quadrature (g_k, w_k) on
@@ -33,7 +33,7 @@ class galerkin_method {
   using V = vec<T, n>;
   using Z = vec<T, unknowns>;
   using controls = Eigen::Matrix<T, n, M + 1>;
-  using D = derivatives<Sys, T>;
+  using D = lagrangian_derivatives<Sys, T>;
   using B = Eigen::Matrix<T, Q, M + 1>;
   using weights = path_weights<T, M, Basis>;
 
@@ -168,7 +168,7 @@ path_weights<T, 1, lagrange> linear_path_weights() {
   return path_weights<T, 1, lagrange>::template make<equispaced>();
 }
 
-}  // namespace detail
+}  // namespace schemes::detail
 
 /// Galerkin variational integrator of degree m (path in a basis on a node family; the
 /// discrete map does not depend on that choice) with m-point Gauss-Legendre quadrature.
@@ -184,10 +184,10 @@ struct galerkin_vi {
   static std::string name() { return "galerkin(m=" + std::to_string(M) + ", gauss-" + std::to_string(M) + ")"; }
 
   template <class Sys, class T>
-  using method = detail::galerkin_method<Sys, T, M, M, Basis>;
+  using method = schemes::detail::galerkin_method<Sys, T, M, M, Basis>;
   template <class Sys, class T>
-  struct engine : detail::step_skeleton<method<Sys, T>> {
-    explicit engine(const Sys& sys) : detail::step_skeleton<method<Sys, T>>(make(sys)) {}
+  struct engine : schemes::detail::step_skeleton<method<Sys, T>> {
+    explicit engine(const Sys& sys) : schemes::detail::step_skeleton<method<Sys, T>>(make(sys)) {}
 
    private:
     /// m-point Gauss-Legendre quadrature of the action (exact for the degree-2m-1 integrands of
@@ -196,9 +196,9 @@ struct galerkin_vi {
       const auto rule = gauss_legendre_rule<M, T>();
       vec<T, M> w;
       for (int k = 0; k < M; ++k) w[k] = rule.weights[static_cast<std::size_t>(k)];
-      return method<Sys, T>(sys, detail::path_weights<T, M, Basis>::template make<Family>(),
-                            detail::basis_at<0, Basis, Family, M, T, M>(rule.points),
-                            detail::basis_at<1, Basis, Family, M, T, M>(rule.points), w);
+      return method<Sys, T>(sys, schemes::detail::path_weights<T, M, Basis>::template make<Family>(),
+                            schemes::detail::basis_at<0, Basis, Family, M, T, M>(rule.points),
+                            schemes::detail::basis_at<1, Basis, Family, M, T, M>(rule.points), w);
     }
   };
 };
@@ -211,13 +211,13 @@ struct midpoint_vi {
   using family = equispaced;
   using basis = lagrange;
   template <class Sys, class T>
-  using method = detail::galerkin_method<Sys, T, 1, 1, lagrange>;
+  using method = schemes::detail::galerkin_method<Sys, T, 1, 1, lagrange>;
   template <class Sys, class T>
-  struct engine : detail::step_skeleton<method<Sys, T>> {
+  struct engine : schemes::detail::step_skeleton<method<Sys, T>> {
     /// One quadrature point at 1/2: x = (x^k + x^{k+1}) / 2, xdot = (x^{k+1} - x^k) / tau.
     explicit engine(const Sys& sys)
-        : detail::step_skeleton<method<Sys, T>>(method<Sys, T>(
-              sys, detail::linear_path_weights<T>(), (Eigen::Matrix<T, 1, 2>() << T(1) / T(2), T(1) / T(2)).finished(),
+        : schemes::detail::step_skeleton<method<Sys, T>>(method<Sys, T>(
+              sys, schemes::detail::linear_path_weights<T>(), (Eigen::Matrix<T, 1, 2>() << T(1) / T(2), T(1) / T(2)).finished(),
               (Eigen::Matrix<T, 1, 2>() << T(-1), T(1)).finished(), vec<T, 1>::Constant(T(1)))) {}
   };
 };
@@ -230,13 +230,13 @@ struct trapezoidal_vi {
   using family = equispaced;
   using basis = lagrange;
   template <class Sys, class T>
-  using method = detail::galerkin_method<Sys, T, 1, 2, lagrange>;
+  using method = schemes::detail::galerkin_method<Sys, T, 1, 2, lagrange>;
   template <class Sys, class T>
-  struct engine : detail::step_skeleton<method<Sys, T>> {
+  struct engine : schemes::detail::step_skeleton<method<Sys, T>> {
     /// Quadrature points 0 and 1 with weights 1/2; the slope is (x^{k+1} - x^k) / tau at both.
     explicit engine(const Sys& sys)
-        : detail::step_skeleton<method<Sys, T>>(method<Sys, T>(
-              sys, detail::linear_path_weights<T>(), Eigen::Matrix<T, 2, 2>::Identity(),
+        : schemes::detail::step_skeleton<method<Sys, T>>(method<Sys, T>(
+              sys, schemes::detail::linear_path_weights<T>(), Eigen::Matrix<T, 2, 2>::Identity(),
               (Eigen::Matrix<T, 2, 2>() << T(-1), T(1), T(-1), T(1)).finished(), vec<T, 2>::Constant(T(1) / T(2)))) {}
   };
 };

@@ -17,7 +17,7 @@
 #include "geomint/schemes/step_skeleton.hpp"
 
 namespace geomint {
-namespace detail {
+namespace schemes::detail {
 
 /// b_i = int_0^1 l_i(s) ds and beta_i = int_0^1 (1 - s) l_i(s) ds for the Lagrange polynomials
 /// l_i on the interior nodes c_1..c_{m-1} (degree m-2), by the (m-1)-point Gauss-Legendre rule
@@ -55,7 +55,7 @@ class lpf_method {
   using V = vec<T, n>;
   using Z = vec<T, unknowns>;
   using controls = Eigen::Matrix<T, n, M + 1>;
-  using D = derivatives<Sys, T>;
+  using D = lagrangian_derivatives<Sys, T>;
   using weights = path_weights<T, M, Basis>;
 
   lpf_method(const Sys& sys, const weights& w) : sys_(sys), w_(w) {
@@ -192,7 +192,7 @@ class lpf_method {
   mat<T, n> minv_ = mat<T, n>::Zero();  // M^{-1} (natural systems)
 };
 
-}  // namespace detail
+}  // namespace schemes::detail
 
 /// The LPF scheme of degree m on a node family in a basis: `lpf<4, gauss_interior, lagrange>`.
 template <int M, class Family = equispaced, class Basis = lagrange>
@@ -211,12 +211,12 @@ struct lpf {
 
   /// The method behind the step skeleton, and the engine the integrator drives.
   template <class Sys, class T>
-  using method = detail::lpf_method<Sys, T, M, Basis>;
+  using method = schemes::detail::lpf_method<Sys, T, M, Basis>;
   template <class Sys, class T>
-  struct engine : detail::step_skeleton<method<Sys, T>> {
+  struct engine : schemes::detail::step_skeleton<method<Sys, T>> {
     explicit engine(const Sys& sys)
-        : detail::step_skeleton<method<Sys, T>>(
-              method<Sys, T>(sys, detail::path_weights<T, M, Basis>::template make<Family>())) {}
+        : schemes::detail::step_skeleton<method<Sys, T>>(
+              method<Sys, T>(sys, schemes::detail::path_weights<T, M, Basis>::template make<Family>())) {}
   };
 };
 

@@ -28,7 +28,7 @@ vec<S, 2> paper23_residual(const vec<S, 2>& x_prev, const vec<S, 2>& x_curr, con
 template <class T>
 vec<T, 2> paper23_step(const vec<T, 2>& x_prev, const vec<T, 2>& x_curr, long k = 1,
                        const newton_options<T>& opt = {}) {
-  using Dl = detail::dual<T, 2>;
+  using Dl = dual<T, 2>;
   vec<T, 2> z = T(2) * x_curr - x_prev;
   const vec<Dl, 2> prev_d = x_prev.template cast<Dl>(), curr_d = x_curr.template cast<Dl>();
   auto residual = [&](const vec<T, 2>& zz, vec<T, 2>& F, mat<T, 2>& J) {
@@ -41,10 +41,10 @@ vec<T, 2> paper23_step(const vec<T, 2>& x_prev, const vec<T, 2>& x_curr, long k 
     }
   };
   step_status st;
-  if (!detail::all_finite(x_prev) || !detail::all_finite(x_curr))
+  if (!all_finite(x_prev) || !all_finite(x_curr))
     st.reason = step_failure::non_finite_input;
   else
-    st = detail::newton_solve<2, T>(residual, z, opt);
+    st = newton_solve<2, T>(residual, z, opt);
   st.step = k;
   if (!st) throw integration_error(st);
   return z;

@@ -29,7 +29,7 @@
 #include "geomint/solvers/newton.hpp"
 
 namespace geomint {
-namespace detail {
+namespace schemes::detail {
 
 /// Dense copy of a square_array into an Eigen matrix.
 template <class T, int N>
@@ -284,5 +284,5 @@ class step_skeleton {
   mutable step_memory<T, n, N> memory_;
 };
 
-}  // namespace detail
+}  // namespace schemes::detail
 }  // namespace geomint

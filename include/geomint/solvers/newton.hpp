@@ -40,7 +40,6 @@ struct newton_options {
   }
 };
 
-namespace detail {
 
 /// Solves F(z) = 0 from z. `residual(z, F, J)` fills F and J = dF/dz.
 template <int N, class T, class Fn>
@@ -168,5 +167,4 @@ step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_op
   return st;
 }
 
-}  // namespace detail
 }  // namespace geomint

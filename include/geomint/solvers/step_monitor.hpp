@@ -38,7 +38,7 @@ struct step_monitor {
 
   /// Throws std::invalid_argument for a bound that is not a finite number in (0, 1].
   void validate() const {
-    if (!detail::is_finite(max_relative_energy_change) || !(max_relative_energy_change > T(0)) ||
+    if (!is_finite(max_relative_energy_change) || !(max_relative_energy_change > T(0)) ||
         max_relative_energy_change > T(1))
       throw std::invalid_argument("step_monitor: max_relative_energy_change must be a finite number in (0, 1]");
   }
@@ -49,7 +49,7 @@ struct step_monitor {
     if (!enabled || !st) return;
     using std::abs;
     using std::max;
-    if (!detail::is_finite(energy_after) || !detail::is_finite(energy_before)) {
+    if (!is_finite(energy_after) || !is_finite(energy_before)) {
       st.reason = step_failure::left_regime;
       st.observed = std::numeric_limits<double>::infinity();
       st.bound = static_cast<double>(max_relative_energy_change);

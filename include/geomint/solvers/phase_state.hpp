@@ -1,0 +1,72 @@
+#pragma once
+/// The state of a one-step integrator and the checks every integrator (free, constrained) runs
+/// around its scheme's step: input validation before, result checks, the optional monitor and
+/// the commit after. A failed step leaves the state unchanged.
+
+#include "geomint/linalg/types.hpp"
+#include "geomint/solvers/step_monitor.hpp"
+#include "geomint/solvers/step_status.hpp"
+
+namespace geomint {
+
+/// A point of the one-step (position-momentum) form.
+///
+/// Time is never accumulated: t_k = t0 + (k - k0) tau, where (k0, t0) is the step and time at
+/// which the current step size tau0 was first used, so 10^7 steps of tau = 1/10 end at exactly
+/// the nearest scalar to 10^6. Set `t` (and `step`) before the first step to start elsewhere.
+template <class T, int n>
+struct phase_state {
+  long step = 0;  ///< k
+  T t = T(0);     ///< t_k
+  vec<T, n> q = vec<T, n>::Zero();
+  vec<T, n> p = vec<T, n>::Zero();
+  long k0 = 0;    ///< the step at which tau0 was first used
+  T t0 = T(0);    ///< t_{k0}
+  T tau0 = T(0);  ///< the step size in use since k0 (0 before the first step)
+
+  /// Commits a successful step: (q_{k+1}, p_{k+1}), k + 1 and t_{k+1} = t0 + (k + 1 - k0) tau.
+  void commit(const vec<T, n>& q1, const vec<T, n>& p1, const T& tau) {
+    if (!(tau0 == tau)) {
+      k0 = step;
+      t0 = t;
+      tau0 = tau;
+    }
+    q = q1;
+    p = p1;
+    ++step;
+    t = t0 + T(step - k0) * tau;
+  }
+};
+
+/// The checks before step k: tau finite and > 0, the data a and b finite.
+template <class T, class A, class B>
+step_status check_step_input(long k, const T& tau, const A& a, const B& b) {
+  step_status st;
+  st.step = k;
+  if (!is_finite(tau) || !(tau > T(0)))
+    st.reason = step_failure::invalid_step_size;
+  else if (!all_finite(a) || !all_finite(b))
+    st.reason = step_failure::non_finite_input;
+  return st;
+}
+
+/// The checks after a scheme's step st from s to (q1, p1): a finite result and, when enabled,
+/// the monitor on energy(q, p); commits to s only if all pass.
+template <class T, int n, class Energy>
+step_status finish_step(phase_state<T, n>& s, step_status st, const vec<T, n>& q1, const vec<T, n>& p1, const T& tau,
+                        const step_monitor<T>& monitor, const Energy& energy) {
+  st.step = s.step;
+  if (!st) return st;
+  if (!all_finite(q1) || !all_finite(p1)) {
+    st.reason = step_failure::non_finite_iterate;
+    return st;
+  }
+  if (monitor.enabled) {
+    monitor.check(energy(s.q, s.p), energy(q1, p1), st);
+    if (!st) return st;
+  }
+  s.commit(q1, p1, tau);
+  return st;
+}
+
+}  // namespace geomint

@@ -1,0 +1,154 @@
+#pragma once
+/// A type-erased one-step map (q_k, p_k) -> (q_{k+1}, p_{k+1}) for a scheme chosen at run time
+/// by name: what a program needs that picks the scheme from a command line or a table (the
+/// tools, the studies). Every step runs the same checks as `integrator::try_step`
+/// (solvers/phase_state.hpp), and a failed step leaves (q1, p1) untouched.
+///
+///   auto s = geomint::make_stepper<geomint::systems::pendulum, double>({"lpf", "gauss_interior", "lagrange", 4});
+///   geomint::step_status st = s->try_step(q, p, tau, q1, p1);
+///
+/// `make_stepper<Sys, T>` instantiates every scheme a spec can name for one (Sys, T): LPF for
+/// m = 2..8 on the four node families and both bases, Galerkin for m = 2..8, midpoint and
+/// trapezoidal. That is some 10 s (double) to 60 s (100 digits) of compile time, so a program
+/// instantiates it once per (Sys, T): `extern template` where it is used, `template` in one
+/// source file (as tools/common/stepper_tu.cpp does).
+
+#include <array>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "geomint/core/dispatch.hpp"
+#include "geomint/integrator.hpp"
+#include "geomint/solvers/phase_state.hpp"
+
+namespace geomint {
+
+/// The schemes a stepper can be made of, and the range of m it accepts.
+inline constexpr std::array<std::string_view, 4> scheme_names = {"lpf", "midpoint", "trapezoidal", "galerkin"};
+inline constexpr int stepper_min_m = 2;
+inline constexpr int stepper_max_m = 8;
+
+/// A scheme chosen by name: `nodes` and `basis` apply to lpf only, `m` to lpf and galerkin.
+/// Node families are accepted under either spelling (core/dispatch.hpp).
+struct scheme_spec {
+  std::string scheme = "lpf";
+  std::string nodes = "equispaced";
+  std::string basis = "lagrange";
+  int m = 2;
+  /// Whether the scheme has an m (midpoint and trapezoidal have none).
+  bool has_m() const { return scheme == "lpf" || scheme == "galerkin"; }
+  /// The node family column of tables: the printed family name, or "-" where it does not apply.
+  std::string nodes_label() const {
+    if (scheme != "lpf") return "-";
+    const auto family = canonical_node_family(nodes);
+    return family ? std::string(*family) : nodes;
+  }
+};
+
+/// The type-erased stepper over scalar T.
+template <class T>
+class any_stepper {
+ public:
+  using vector = dynamic_vector<T>;
+  virtual ~any_stepper() = default;
+  virtual int dof() const = 0;
+  /// The scheme's name, e.g. "lpf(m=4, gauss-interior, lagrange)".
+  virtual std::string name() const = 0;
+  /// The step monitor applied by try_step (off unless set; see solvers/step_monitor.hpp).
+  void set_monitor(const step_monitor<T>& m) {
+    m.validate();
+    monitor_ = m;
+  }
+  const step_monitor<T>& monitor() const { return monitor_; }
+  /// One step of size tau from (q, p); on failure q1 and p1 are untouched. A state of the wrong
+  /// dimension is a programming error (std::invalid_argument).
+  virtual step_status try_step(const vector& q, const vector& p, const T& tau, vector& q1, vector& p1,
+                               const newton_options<T>& opt = {}) const = 0;
+  /// The energy at (q, p) (NaN where the Legendre transform cannot be inverted).
+  virtual T energy(const vector& q, const vector& p) const = 0;
+  /// p = dL/dqdot(q, qdot).
+  virtual vector momentum(const vector& q, const vector& qdot) const = 0;
+
+ protected:
+  step_monitor<T> monitor_;
+};
+
+/// The stepper of one scheme (a type such as `lpf<4, gauss_interior>`) on one system.
+template <class Scheme, class Sys, class T>
+class scheme_stepper final : public any_stepper<T> {
+  static constexpr int n = Sys::dof;
+  using V = vec<T, n>;
+  using typename any_stepper<T>::vector;
+
+ public:
+  explicit scheme_stepper(const Sys& sys = Sys{}) : sys_(sys), engine_(sys) {}
+  int dof() const override { return n; }
+  std::string name() const override { return Scheme::name(); }
+
+  step_status try_step(const vector& q, const vector& p, const T& tau, vector& q1, vector& p1,
+                       const newton_options<T>& opt) const override {
+    phase_state<T, n> s;
+    s.q = fixed(q);
+    s.p = fixed(p);
+    const step_status st = check_step_input(s.step, tau, s.q, s.p);
+    if (!st) return st;
+    V q1f = V::Zero(), p1f = V::Zero();
+    const step_status done = finish_step(s, engine_.one_step(s.q, s.p, tau, q1f, p1f, opt), q1f, p1f, tau, this->monitor_,
+                                         [this](const V& a, const V& b) { return energy_of(a, b); });
+    if (done) {
+      q1 = s.q;
+      p1 = s.p;
+    }
+    return done;
+  }
+  T energy(const vector& q, const vector& p) const override { return energy_of(fixed(q), fixed(p)); }
+  vector momentum(const vector& q, const vector& qdot) const override {
+    return geomint::momentum<Sys, T>(sys_, fixed(q), fixed(qdot));
+  }
+
+ private:
+  static V fixed(const vector& x) {
+    if (x.size() != n)
+      throw std::invalid_argument("geomint::any_stepper: a vector of size " + std::to_string(x.size()) + " for a system with " +
+                                  std::to_string(n) + " degrees of freedom");
+    return V(x);
+  }
+  T energy_of(const V& q, const V& p) const {
+    V v;
+    if (!lagrangian_derivatives<Sys, T>::velocity(sys_, q, p, v)) return std::numeric_limits<T>::quiet_NaN();
+    return energy_qv<Sys, T>(sys_, q, v);
+  }
+  Sys sys_;
+  typename Scheme::template engine<Sys, T> engine_;
+};
+
+/// The stepper named by `spec` on `sys`; std::invalid_argument for an unknown scheme, node
+/// family or basis, or m outside stepper_min_m..stepper_max_m.
+template <class Sys, class T>
+std::unique_ptr<any_stepper<T>> make_stepper(const scheme_spec& spec, const Sys& sys = Sys{}) {
+  auto make = [&]<class Scheme>() -> std::unique_ptr<any_stepper<T>> {
+    return std::make_unique<scheme_stepper<Scheme, Sys, T>>(sys);
+  };
+  auto with_m = [&](auto&& f) {
+    try {
+      return with_int<stepper_min_m, stepper_max_m>(spec.m, f);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("m ") + e.what());
+    }
+  };
+  if (spec.scheme == "midpoint") return make.template operator()<midpoint_vi>();
+  if (spec.scheme == "trapezoidal") return make.template operator()<trapezoidal_vi>();
+  if (spec.scheme == "galerkin") return with_m([&]<int M>() { return make.template operator()<galerkin_vi<M>>(); });
+  if (spec.scheme == "lpf")
+    return with_m([&]<int M>() {
+      return with_node_family(spec.nodes, [&]<class Family>() {
+        return with_basis(spec.basis, [&]<class Basis>() { return make.template operator()<lpf<M, Family, Basis>>(); });
+      });
+    });
+  throw std::invalid_argument("unknown scheme '" + spec.scheme + "' (lpf|midpoint|trapezoidal|galerkin)");
+}
+
+}  // namespace geomint

@@ -1,0 +1,29 @@
+#pragma once
+/// `--digits D` of the tools: the scalar type of D, and D as a template argument.
+#include <type_traits>
+
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+namespace geomint::tools {
+
+/// The scalar type of `--digits D`: double, cpp_bin_float_50, cpp_bin_float_100.
+template <int Digits>
+struct digits_scalar {
+  static_assert(Digits == 16 || Digits == 50 || Digits == 100, "geomint tools: digits must be 16, 50 or 100");
+  using type = std::conditional_t<Digits == 16, double,
+                                  std::conditional_t<Digits == 50, boost::multiprecision::cpp_bin_float_50,
+                                                     boost::multiprecision::cpp_bin_float_100>>;
+};
+template <int Digits>
+using scalar_for_digits = typename digits_scalar<Digits>::type;
+
+/// f.template operator()<D>() for the run-time digits D (16, 50, or else 100; the command-line
+/// parser has already checked it).
+template <class F>
+decltype(auto) with_digits(int digits, F&& f) {
+  if (digits == 16) return f.template operator()<16>();
+  if (digits == 50) return f.template operator()<50>();
+  return f.template operator()<100>();
+}
+
+}  // namespace geomint::tools
