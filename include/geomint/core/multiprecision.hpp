@@ -36,19 +36,4 @@ struct hypot_impl<boost::multiprecision::number<Backend, ET>> {
 };
 }  // namespace Eigen::internal
 
-#include <cstdlib>
-#include <type_traits>
-
-namespace geomint {
-
-/// A decimal constant read in the precision of T: strtof/strtod/strtold for the built-in types
-/// (correctly rounded), the multiprecision type's own parser otherwise. Never through double.
-template <class T>
-T from_decimal(const char* text) {
-  if constexpr (std::is_same_v<T, float>) return std::strtof(text, nullptr);
-  else if constexpr (std::is_same_v<T, double>) return std::strtod(text, nullptr);
-  else if constexpr (std::is_floating_point_v<T>) return static_cast<T>(std::strtold(text, nullptr));
-  else return T(text);
-}
-
-}  // namespace geomint
+#include "geomint/core/decimal.hpp"  // from_decimal, for the users of this header

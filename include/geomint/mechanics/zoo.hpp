@@ -17,7 +17,7 @@
 #include <string_view>
 #include <type_traits>
 
-#include "geomint/core/multiprecision.hpp"
+#include "geomint/core/decimal.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
 
 namespace geomint::zoo {
