@@ -45,8 +45,10 @@ static_assert(tree_order(galerkin_tableau<1>()) == 2 && tree_order(galerkin_tabl
 static_assert(tree_order(galerkin_tableau<3>()) == 6 && tree_order(galerkin_tableau<4>()) == 8);
 template <int M>
 constexpr bool galerkin_quadrature_orders() {
-  if (quadrature_order(galerkin_tableau<M>()) != 2 * M) return false;
-  if (!symplecticity(galerkin_tableau<M>()).symplectic) return false;
+  constexpr exact_rkn_tableau t = galerkin_tableau<M>();  // evaluated once
+  if (quadrature_order(t) != 2 * M) return false;
+  if (!symplecticity(t).symplectic) return false;
+  if (!symmetry(t).symmetric) return false;
   if constexpr (M < 8) return galerkin_quadrature_orders<M + 1>();
   return true;
 }
@@ -64,6 +66,9 @@ constexpr bool lpf_family_facts() {
   static_assert(t.stages == M - 1);
   static_assert(quadrature_order(t) == expected_order<Family>(M));
   static_assert(symplecticity(t).symplectic == (std::is_same_v<Family, gauss_interior> || M == 2));
+  // Every family's interior nodes are symmetric about 1/2, so every LPF scheme is symmetric
+  // (a collocation method with symmetric nodes is symmetric: HLW, Theorem V.2.3).
+  static_assert(symmetry(t).nodes_symmetric && symmetry(t).symmetric);
   if constexpr (M < max_exact_m) return lpf_family_facts<Family, M + 1>();
   return true;
 }

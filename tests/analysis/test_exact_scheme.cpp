@@ -49,7 +49,7 @@ void check_against_integrator(const exact_two_step_scheme& exact, int ulps) {
   const T tau = T(1) / T(1000);
   const T R = two_step_coefficients<Scheme>(tau).first;
   const T ratio = (R - T(2) * cos(tau)) / pow(tau, exact.leading_power());
-  const T c = T(exact.leading_coefficient.num.str()) / T(exact.leading_coefficient.den.str());
+  const T c = T(exact.leading_coefficient.num.str()) / T(exact.leading_coefficient.den().str());
   INFO("m " << exact.m << " (R - 2 cos)/tau^(p+2) " << ratio << " exact c " << exact.leading_coefficient);
   // Round-off: ~ulps eps / tau^(p+2) <= 1e-46 / 1e-30; truncation: O(tau^2) = 1e-6 relative.
   CHECK(abs(ratio / c - T(1)) <= T(1) / T(10000));

@@ -8,9 +8,15 @@
 /// pendulum (f = -sin q) to the precision of cpp_bin_float_50, for each family and m = 2..8.
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <string>
+#include <vector>
 
 #include "catch.hpp"
+#include "geomint/analysis/any_system.hpp"
+#include "geomint/analysis/order_conditions.hpp"
+#include "geomint/analysis/order_study.hpp"
+#include "geomint/analysis/reference_flow.hpp"
 #include "geomint/analysis/rkn_tableau.hpp"
+#include "geomint/analysis/scheme_structure.hpp"
 #include "geomint/integrator.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "scalar_types.hpp"
@@ -92,4 +98,172 @@ TEST_CASE("rkn tableau: one step equals the classical VIs' step (50 digits)", "[
   check_step<midpoint_vi>(numeric_tableau<T>(midpoint_tableau(), nullptr), "midpoint");
   check_step<trapezoidal_vi>(numeric_tableau<T>(trapezoidal_tableau(), nullptr), "trapezoidal");
   check_galerkin<1>();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Three independent orders per family and m = 2..8:
+// - the tree order: every Nystrom order condition evaluated exactly on the tableau
+//   (analysis/order_conditions.hpp);
+// - the quadrature order of the interior nodes, from the node polynomial N alone (not from the
+//   tableau's weights): the interpolatory quadrature on the s roots of N integrates x^j exactly
+//   for j < s + k iff int_0^1 N(x) x^i dx = 0 for i < k (its error on x^j is the integral of
+//   the remainder of x^j by N, a combination of N x^i); the moments are exact rationals. The
+//   roots of that N are checked against the integrator's nodes (core/nodes.hpp) in 50 digits;
+// - the order measured by the order study of geomint-order (analysis/order_study.hpp) with the
+//   integrator in cpp_bin_float_50 on the pendulum against the Taylor reference flow.
+// Collocation theory says the first two agree (HNW I, Theorem II.7.9 and section II.14), and
+// the third is what the integrator actually does.
+namespace {
+
+/// The tableau through a non-constexpr function, so that the exact evaluations on it below run
+/// at run time: GCC would otherwise try to fold them at compile time (its arguments being
+/// constants) under the test suite's large -fconstexpr-ops-limit, for minutes.
+[[gnu::noinline]] exact_rkn_tableau at_run_time(const exact_rkn_tableau& t) { return t; }
+
+/// Quadrature order s + k of the roots of the monic N (degree s), k = number of vanishing
+/// leading moments int_0^1 N(x) x^i dx, i = 0, 1, ... (exact).
+int quadrature_order_from_node_polynomial(const exact_number* n, int s) {
+  int k = 0;
+  for (; k <= s; ++k) {
+    exact_number moment;
+    for (int j = 0; j <= s; ++j) moment = moment + n[j] * exact_number(rational(1, j + k + 1));
+    if (!moment.num.is_zero()) break;
+  }
+  return s + k;
+}
+
+/// max |N(c_i)| over the family's interior nodes in T (N from the exact tableau).
+template <int M, class Family>
+T node_polynomial_residual(const exact_rkn_tableau& t) {
+  using std::abs;
+  const auto c = nodes<Family, M, T>();
+  T worst(0);
+  for (int i = 1; i < M; ++i) {
+    T value(0);
+    for (int k = t.stages; k >= 0; --k) value = value * c[static_cast<std::size_t>(i)] + T(t.node_polynomial[k].num.str()) / T(t.node_polynomial[k].den().str());
+    worst = std::max(worst, T(abs(value)));
+  }
+  return worst;
+}
+
+/// Observed global and local orders of Scheme on the pendulum from (q, p) = (1, 1/2), T = 1,
+/// N = 4, 8, 16, against the Taylor reference flow (the machinery of geomint-order).
+template <class Scheme>
+analysis::order_result<T> measured_orders() {
+  const integrator<Scheme, systems::pendulum, T> I(systems::pendulum{}, T(1));
+  analysis::reference_function<T> reference = [](const T& t, analysis::dynamic_vector<T>& q, analysis::dynamic_vector<T>& p) {
+    analysis::reference_flow<systems::pendulum, T> flow(vec<T, 1>(T(1)), vec<T, 1>(T(1) / T(2)));
+    flow.advance_to(t);
+    q = analysis::dynamic_vector<T>::Constant(1, flow.q()[0]);
+    p = analysis::dynamic_vector<T>::Constant(1, flow.p()[0]);
+  };
+  const analysis::dynamic_vector<T> q0 = analysis::dynamic_vector<T>::Constant(1, T(1)),
+                                    p0 = analysis::dynamic_vector<T>::Constant(1, T(1) / T(2));
+  return analysis::order_study<T>(analysis::step_of(I), reference, q0, p0, T(1), {4, 8, 16});
+}
+
+template <class Family, int M>
+void check_orders_agree() {
+  const exact_rkn_tableau t = at_run_time(lpf_tableau<M, Family>());
+  const int trees = tree_order(t);
+  const int quadrature = quadrature_order_from_node_polynomial(t.node_polynomial, t.stages);
+  const auto measured = measured_orders<lpf<M, Family>>();
+  INFO("lpf m=" << M << " " << Family::name << ": tree order " << trees << ", quadrature order " << quadrature
+                << ", measured global " << measured.global_order << ", local " << measured.local_order);
+  CHECK(node_polynomial_residual<M, Family>(t) <= geomint::test::eps_tol<T>(1000));
+  CHECK(trees == quadrature);
+  REQUIRE(measured.ok);
+  using std::abs;
+  // The order is the global one (as geomint-order reports it): within 1/4 of the integer at
+  // these steps. The local error is O(tau^(p+1)) at least (equispaced m = 5 shows 5.5 at N = 16).
+  CHECK(abs(measured.global_order - T(trees)) < T(1) / T(4));
+  CHECK(measured.local_order > T(trees + 1) - T(1) / T(4));
+  if constexpr (M < max_exact_m) check_orders_agree<Family, M + 1>();
+}
+
+}  // namespace
+
+TEST_CASE("tree order == quadrature order of the interior nodes == measured order, every family, m = 2..8",
+          "[analysis][tableau][order]") {
+  check_orders_agree<equispaced, 2>();
+  check_orders_agree<gauss_interior, 2>();
+  check_orders_agree<gauss_lobatto, 2>();
+  check_orders_agree<chebyshev_lobatto, 2>();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The exact symplecticity verdicts (analysis/scheme_structure.hpp: Suris' conditions on the
+// exact tableau) against the numerical defect max |J^T Omega J - Omega| of one integrator step
+// (analysis::symplecticity_defect, the function behind geomint-symplectic), on the pendulum
+// (nonlinear, natural) in cpp_bin_float_50 at tau = 1/2 from (q, qdot) = (1, 1/2). The
+// difference Jacobian is accurate to about eps^(4/5) (1e-40): a symplectic verdict must give a
+// defect at that noise level, a non-symplectic one a defect far above it.
+namespace {
+
+struct defect_record {
+  std::string label;
+  bool exact_symplectic = false;
+  T defect;
+};
+
+template <class Scheme>
+defect_record measured_defect(const exact_rkn_tableau& t, const std::string& label) {
+  const integrator<Scheme, systems::pendulum, T> I(systems::pendulum{}, T(1) / T(2));
+  const T defect = analysis::symplecticity_defect(I, vec<T, 1>(T(1)), vec<T, 1>(T(1) / T(2)), T(1) / T(2));
+  return {label, symplecticity(at_run_time(t)).symplectic, defect};
+}
+
+template <class Family, int M>
+void collect_lpf_defects(std::vector<defect_record>& out) {
+  out.push_back(measured_defect<lpf<M, Family>>(lpf_tableau<M, Family>(), "lpf m=" + std::to_string(M) + " " + std::string(Family::name)));
+  if constexpr (M < max_exact_m) collect_lpf_defects<Family, M + 1>(out);
+}
+
+template <int M>
+void collect_galerkin_defects(std::vector<defect_record>& out) {
+  out.push_back(measured_defect<galerkin_vi<M>>(galerkin_tableau<M>(), "galerkin m=" + std::to_string(M)));
+  if constexpr (M < max_exact_m) collect_galerkin_defects<M + 1>(out);
+}
+
+}  // namespace
+
+TEST_CASE("exact symplecticity verdicts agree with the numerical defects of the integrators", "[analysis][tableau][symplectic]") {
+  std::vector<defect_record> records;
+  collect_lpf_defects<equispaced, 2>(records);
+  collect_lpf_defects<gauss_interior, 2>(records);
+  collect_lpf_defects<gauss_lobatto, 2>(records);
+  collect_lpf_defects<chebyshev_lobatto, 2>(records);
+  collect_galerkin_defects<1>(records);
+  records.push_back(measured_defect<midpoint_vi>(midpoint_tableau(), "midpoint"));
+  records.push_back(measured_defect<trapezoidal_vi>(trapezoidal_tableau(), "trapezoidal"));
+  using std::pow;
+  const T noise = T(1024) * pow(std::numeric_limits<T>::epsilon(), T(4) / T(5));
+  int symplectic_count = 0;
+  for (const auto& r : records) {
+    INFO(r.label << ": exact verdict " << (r.exact_symplectic ? "symplectic" : "not symplectic") << ", numerical defect " << r.defect);
+    if (r.exact_symplectic) {
+      ++symplectic_count;
+      CHECK(r.defect <= noise);
+    } else {
+      CHECK(r.defect > noise * T(1000000));
+    }
+  }
+  // Gauss interior (7), m = 2 of the other three families, Galerkin (8), midpoint, trapezoidal.
+  CHECK(symplectic_count == 7 + 3 + 8 + 2);
+}
+
+TEST_CASE("user tableaux built at run time equal the ones built at compile time", "[analysis][tableau]") {
+  // Run-time construction from run-time data exercises the code paths that GCC 12 once
+  // miscompiled (default-initialised local arrays of exact numbers, zero-filled); the
+  // compile-time value is the independent reference.
+  volatile int k = 5;  // not a constant
+  const int a = k;
+  const exact_rkn_tableau from_nodes =
+      collocation_tableau_from_nodes<3>({rational(a, 40), rational(1, 2), rational(40 - a, 40)});
+  constexpr exact_rkn_tableau expected = collocation_tableau_from_nodes<3>({rational(5, 40), rational(1, 2), rational(35, 40)});
+  CHECK(from_nodes == expected);
+  const exact_rkn_tableau from_polynomial =
+      collocation_tableau_from_polynomial<2>({rational(a, 30), rational(-1), rational(1)});  // x^2 - x + 1/6
+  CHECK(from_polynomial == lpf_tableau<3, gauss_interior>());
+  CHECK(tree_order(from_nodes) == 4);
 }

@@ -9,6 +9,8 @@
 /// top limbs (the rare add-back branch of Knuth's algorithm D). About 1.2 million operations.
 #include <boost/multiprecision/cpp_int.hpp>
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -151,7 +153,7 @@ TEST_CASE("big_rational: + - * / <=> against cpp_rational", "[core][big_rational
     const cpp_rational a(an, ad), b(bn, bd);
     const bigq A(from_cpp(an), from_cpp(ad)), B(from_cpp(bn), from_cpp(bd));
     REQUIRE(to_cpp(A.num) == numerator(a));
-    REQUIRE(to_cpp(A.den) == denominator(a));
+    REQUIRE(to_cpp(A.den()) == denominator(a));
     for (int op = 0; op < 4; ++op) {
       if (op == 3 && b == 0) {
         REQUIRE_THROWS_AS(A / B, std::domain_error);
@@ -163,7 +165,7 @@ TEST_CASE("big_rational: + - * / <=> against cpp_rational", "[core][big_rational
                                            : cpp_rational(a / b);
       const bigq r = op == 0 ? A + B : op == 1 ? A - B : op == 2 ? A * B : A / B;
       REQUIRE(to_cpp(r.num) == numerator(exact));
-      REQUIRE(to_cpp(r.den) == denominator(exact));
+      REQUIRE(to_cpp(r.den()) == denominator(exact));
     }
     REQUIRE(((A <=> B) < 0) == (a < b));
     REQUIRE((A == B) == (a == b));
@@ -171,6 +173,25 @@ TEST_CASE("big_rational: + - * / <=> against cpp_rational", "[core][big_rational
   // Beyond the capacity: (2^100 + 1)/3 squared needs 201 bits; it throws.
   const bigq huge(from_cpp((cpp_int(1) << 100) + 1), big(3));
   REQUIRE_THROWS_AS(huge * huge, std::overflow_error);
+}
+
+TEST_CASE("big_rational: zero-filled storage and default-initialised arrays are the value 0", "[core][big_rational]") {
+  // The representation (denominator stored minus one) makes zero bits the value 0 = 0/1, so no
+  // zero-filling path of a compiler can produce 0/0 (GCC 12 zero-fills default-initialised
+  // arrays of exact numbers in some folded initialisations). Independent source: the value of
+  // the all-zero object must equal the default-constructed 0 and behave as 0 in arithmetic.
+  using R = geomint::big_rational<4>;
+  static_assert(std::is_trivially_copyable_v<R>);
+  R filled[5];
+  std::memset(static_cast<void*>(filled), 0, sizeof filled);
+  R defaulted[5];
+  for (int k = 0; k < 5; ++k) {
+    CHECK(filled[k] == R(0));
+    CHECK(defaulted[k] == R(0));
+    CHECK(filled[k].den() == geomint::big_integer<4>(1));
+    CHECK(filled[k] + R(geomint::rational(2, 3)) == R(geomint::rational(2, 3)));
+    CHECK(defaulted[k] * R(7) == R(0));
+  }
 }
 
 TEST_CASE("integer_polynomial: products, exact quotients and gcd against cpp_int", "[core][integer_polynomial]") {

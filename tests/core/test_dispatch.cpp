@@ -21,8 +21,8 @@ std::string family_of() {
 TEST_CASE("dispatch: with_int calls the lambda with the chosen value, and rejects values outside the range") {
   for (int m = 2; m <= 8; ++m) CHECK(with_int<2, 8>(m, []<int M>() { return M; }) == m);
   CHECK(with_int<5, 5>(5, []<int M>() { return M * 10; }) == 50);
-  CHECK_THROWS_AS(with_int<2, 8>(1, []<int M>() { return M; }), std::invalid_argument);
-  CHECK_THROWS_AS(with_int<2, 8>(9, []<int M>() { return M; }), std::invalid_argument);
+  CHECK_THROWS_AS((with_int<2, 8>(1, []<int M>() { return M; })), std::invalid_argument);
+  CHECK_THROWS_AS((with_int<2, 8>(9, []<int M>() { return M; })), std::invalid_argument);
   try {
     with_int<2, 8>(9, []<int M>() { return M; });
   } catch (const std::invalid_argument& e) {

@@ -6,7 +6,7 @@
 /// - a second method: the double pendulum in angle coordinates integrated by the unconstrained
 ///   LPF integrator, compared at the order of the method.
 #include <geomint/constrained_integrator.hpp>
-#include <geomint/integrator.hpp>  // the double pendulum in angles (unconstrained comparison)
+#include <geomint/integrator.hpp>
 #include <geomint/mechanics/constrained_systems.hpp>
 #include <geomint/schemes/paper23.hpp>
 

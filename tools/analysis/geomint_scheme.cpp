@@ -76,7 +76,7 @@ std::vector<decimal> stages_of(const std::string& scheme, const std::string& fam
   return interior_nodes_of(family, m);
 }
 
-decimal to_decimal(const exact_number& x) { return decimal(x.num.str()) / decimal(x.den.str()); }
+decimal to_decimal(const exact_number& x) { return decimal(x.num.str()) / decimal(x.den().str()); }
 
 std::string digits30(const decimal& x) {
   std::ostringstream s;

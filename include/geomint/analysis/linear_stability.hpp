@@ -53,9 +53,6 @@ struct qpoly {
   static constexpr int capacity = 2 * max_stability_degree + 3;
   exact_number c[capacity];
   int degree = -1;
-  constexpr qpoly() {
-    for (exact_number& x : c) x = exact_number(0);  // explicitly: see stage_vector (rkn_tableau.hpp)
-  }
   constexpr void trim() {
     degree = capacity - 1;
     while (degree >= 0 && c[degree].num.is_zero()) --degree;
@@ -144,7 +141,7 @@ constexpr stability_polynomial integer_part_scaled(const qpoly& p, const stabili
   stability_polynomial r;
   for (int k = 0; k <= p.degree; ++k) {
     const exact_number v = p.c[k] * exact_number(scale, stability_integer(1));
-    if (!(v.den == stability_integer(1))) throw std::logic_error("geomint: scaling did not clear the denominators");
+    if (!(v.den() == stability_integer(1))) throw std::logic_error("geomint: scaling did not clear the denominators");
     r[k] = v.num;
   }
   r.trim();
@@ -152,7 +149,7 @@ constexpr stability_polynomial integer_part_scaled(const qpoly& p, const stabili
 }
 
 constexpr stability_integer lcm_of_denominators(const qpoly& p, stability_integer l) {
-  for (int k = 0; k <= p.degree; ++k) l = l / gcd(l, p.c[k].den) * p.c[k].den;
+  for (int k = 0; k <= p.degree; ++k) l = l / gcd(l, p.c[k].den()) * p.c[k].den();
   return l;
 }
 
@@ -246,7 +243,7 @@ inline stability_interval periodicity_interval(const linear_stability_result& r)
     return w;
   };
   auto sign = [&](const stability_polynomial& p, const exact_number& z) {
-    const wide n = widen(z.num), d = widen(z.den);
+    const wide n = widen(z.num), d = widen(z.den());
     wide v;
     for (int k = p.degree; k >= 0; --k) {
       wide dk(1);

@@ -95,16 +95,16 @@ constexpr order_summary evaluate_order_conditions(const exact_rkn_tableau& t, in
         psi[static_cast<std::size_t>(i)] = t.one;
         continue;
       }
-      const stage_vector* y = &t.c;
-      if (u.son > 0) {
-        const std::size_t w = static_cast<std::size_t>(u.son - 1);
-        if (!have_a_psi[w]) {
-          a_psi[w] = t.apply_a(psi[w]);
-          have_a_psi[w] = 1;
-        }
-        y = &a_psi[w];
+      if (u.son == 0) {  // the meagre leaf: Y = c
+        psi[static_cast<std::size_t>(i)] = t.multiply_by_nodes(psi[static_cast<std::size_t>(u.rest)]);
+        continue;
       }
-      psi[static_cast<std::size_t>(i)] = t.multiply(psi[static_cast<std::size_t>(u.rest)], *y);
+      const std::size_t w = static_cast<std::size_t>(u.son - 1);  // the son is meagre over the tree w
+      if (!have_a_psi[w]) {
+        a_psi[w] = t.apply_a(psi[w]);
+        have_a_psi[w] = 1;
+      }
+      psi[static_cast<std::size_t>(i)] = t.multiply(psi[static_cast<std::size_t>(u.rest)], a_psi[w]);
     }
     // Order k: p-conditions on trees of size k, q-conditions on trees of size k - 1.
     bool failed = false;
@@ -152,7 +152,7 @@ constexpr int quadrature_order(const exact_rkn_tableau& t, int limit = 2 * max_e
   stage_vector power = t.one;
   for (int j = 0; j < limit; ++j) {
     if (!(t.apply_b(power) == exact_number(rational(1, j + 1)))) return j;
-    power = t.multiply(power, t.c);
+    power = t.multiply_by_nodes(power);
   }
   return limit;
 }

@@ -63,14 +63,15 @@ enum class stage_basis {
 
 /// A stage vector: s exact coordinates.
 ///
-/// The structs holding arrays of exact numbers assign every element in their constructors:
-/// GCC 12 (constant evaluation and code generation alike) otherwise produced zero-filled
-/// elements (zero denominators) for default-initialised array elements of these aggregates.
+/// Arrays of exact numbers need no initialiser: the default (and the zero-filled) exact number
+/// is 0, bit for bit (big_rational stores its denominator minus one). That is what makes them
+/// safe from GCC 12, which zero-fills such arrays on two paths: a copied element of a partly
+/// assigned value-initialised array in constant evaluation (`symmetry` of lpf m >= 5 threw
+/// "zero denominator" after m = 4 had been evaluated), and the folded default-initialisation of a
+/// local array at run time, which ran the constructor on the first two elements only (a
+/// collocation tableau built at run time threw). With a denominator stored as is, both gave 0/0.
 struct stage_vector {
   exact_number v[max_exact_stages];
-  constexpr stage_vector() {
-    for (exact_number& x : v) x = exact_number(0);  // explicitly: see above
-  }
   friend constexpr bool operator==(const stage_vector&, const stage_vector&) = default;
   constexpr const exact_number& operator[](int k) const { return v[k]; }
   constexpr exact_number& operator[](int k) { return v[k]; }
@@ -84,17 +85,8 @@ struct exact_rkn_tableau {
   exact_number a[max_exact_stages][max_exact_stages];  ///< the operator A on coordinates: (A v)_i = sum_j a[i][j] v_j
   exact_number bbar[max_exact_stages];                 ///< the functional bbar: bbar(v) = sum_k bbar[k] v_k
   exact_number b[max_exact_stages];                    ///< the functional b
-  stage_vector c{};                                      ///< the vector of nodes (x mod N, or c itself)
-  stage_vector one{};                                    ///< the vector of ones
-
-  constexpr exact_rkn_tableau() {  // every element assigned explicitly: see stage_vector
-    for (int i = 0; i < max_exact_stages; ++i) {
-      for (int j = 0; j < max_exact_stages; ++j) a[i][j] = exact_number(0);
-      bbar[i] = exact_number(0);
-      b[i] = exact_number(0);
-    }
-    for (exact_number& x : node_polynomial) x = exact_number(0);
-  }
+  stage_vector c;                                      ///< the vector of nodes (x mod N, or c itself)
+  stage_vector one;                                    ///< the vector of ones
 
   /// Componentwise product of stage vectors (product modulo N in the monomial basis).
   constexpr stage_vector multiply(const stage_vector& u, const stage_vector& w) const {
@@ -111,6 +103,17 @@ struct exact_rkn_tableau {
     }
     reduce(p, 2 * stages - 2);
     for (int i = 0; i < stages; ++i) r[i] = p[i];
+    return r;
+  }
+  /// The product u * c with the vector of nodes: in the monomial basis x u mod N, a shift and
+  /// one reduction step (O(s) instead of the O(s^2) general product).
+  constexpr stage_vector multiply_by_nodes(const stage_vector& u) const {
+    if (basis == stage_basis::values) return multiply(u, c);
+    stage_vector r;
+    for (int i = stages - 1; i >= 1; --i) r[i] = u[i - 1];
+    const exact_number& top = u[stages - 1];  // x^s = -(n_0 + ... + n_{s-1} x^{s-1}) mod N
+    if (!top.num.is_zero())
+      for (int i = 0; i < stages; ++i) r[i] = r[i] - top * node_polynomial[i];
     return r;
   }
   /// p (degree <= top) modulo the monic N, in place: p[0..s-1] hold the remainder.
@@ -154,10 +157,7 @@ namespace analysis::detail {
 /// Polynomial coefficients (ascending) of up to degree 2 max_exact_stages + 2.
 struct exact_poly_buffer {
   static constexpr int capacity = 2 * max_exact_stages + 3;
-  exact_number c[capacity];
-  constexpr exact_poly_buffer() {
-    for (exact_number& x : c) x = exact_number(0);  // explicitly: see stage_vector
-  }
+  exact_number c[capacity];  // default-initialised: see stage_vector
 };
 
 /// The collocation tableau (LPF interior nodes) on the roots of a monic N of degree s.
@@ -320,22 +320,40 @@ constexpr exact_rkn_tableau galerkin_tableau() {
   }
 }
 
-/// An explicit rational RKN tableau with s stages (values basis).
+/// An explicit rational RKN tableau with s stages (values basis): c (s nodes), a (s rows of s
+/// entries), bbar and b (s weights each), all exact geomint::rational. Sizes and entry types are
+/// deduced, so that a malformed tableau is a readable compile error.
+template <class NodeEntry, std::size_t S, class MatrixEntry, std::size_t Columns, std::size_t Rows, class BbarEntry,
+          std::size_t BbarSize, class BEntry, std::size_t BSize>
+constexpr exact_rkn_tableau rational_rkn_tableau(const std::array<NodeEntry, S>& c,
+                                                 const std::array<std::array<MatrixEntry, Columns>, Rows>& a,
+                                                 const std::array<BbarEntry, BbarSize>& bbar,
+                                                 const std::array<BEntry, BSize>& b) {
+  static_assert(std::is_same_v<NodeEntry, rational> && std::is_same_v<MatrixEntry, rational> &&
+                    std::is_same_v<BbarEntry, rational> && std::is_same_v<BEntry, rational>,
+                "geomint::rational_rkn_tableau: every entry must be an exact geomint::rational (floating-point "
+                "entries are not exact; write rational(1, 3), not 1.0 / 3)");
+  static_assert(S >= 1 && S <= max_exact_stages, "geomint::rational_rkn_tableau: the number of stages must be in 1..8");
+  static_assert(Rows == S, "geomint::rational_rkn_tableau: a must have one row per stage (as many rows as nodes c)");
+  static_assert(Columns == S, "geomint::rational_rkn_tableau: every row of a must have one entry per stage");
+  static_assert(BbarSize == S && BSize == S, "geomint::rational_rkn_tableau: bbar and b must have one weight per stage");
+  exact_rkn_tableau t;
+  t.stages = static_cast<int>(S);
+  t.basis = stage_basis::values;
+  for (std::size_t i = 0; i < S; ++i) {
+    t.c[static_cast<int>(i)] = exact_number(c[i]);
+    t.one[static_cast<int>(i)] = exact_number(1);
+    t.b[i] = exact_number(b[i]);
+    t.bbar[i] = exact_number(bbar[i]);
+    for (std::size_t j = 0; j < S; ++j) t.a[i][j] = exact_number(a[i][j]);
+  }
+  return t;
+}
+/// The same with the number of stages given, for braced lists: `rational_rkn_tableau<2>({...}, ...)`.
 template <int S>
 constexpr exact_rkn_tableau rational_rkn_tableau(const std::array<rational, S>& c, const std::array<std::array<rational, S>, S>& a,
                                                  const std::array<rational, S>& bbar, const std::array<rational, S>& b) {
-  static_assert(S >= 1 && S <= max_exact_stages, "geomint::rational_rkn_tableau: the number of stages must be in 1..8");
-  exact_rkn_tableau t;
-  t.stages = S;
-  t.basis = stage_basis::values;
-  for (int i = 0; i < S; ++i) {
-    t.c[i] = exact_number(c[static_cast<std::size_t>(i)]);
-    t.one[i] = exact_number(1);
-    t.b[i] = exact_number(b[static_cast<std::size_t>(i)]);
-    t.bbar[i] = exact_number(bbar[static_cast<std::size_t>(i)]);
-    for (int j = 0; j < S; ++j) t.a[i][j] = exact_number(a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)]);
-  }
-  return t;
+  return rational_rkn_tableau<rational, S, rational, S, S, rational, S, rational, S>(c, a, bbar, b);
 }
 
 /// The midpoint VI (scheme 17) and the trapezoidal VI (Stormer-Verlet).
@@ -347,30 +365,108 @@ constexpr exact_rkn_tableau trapezoidal_tableau() {
                                  {rational(1, 2), rational(0)}, {rational(1, 2), rational(1, 2)});
 }
 
-/// Collocation (LPF-type) tableau on user data: the s distinct rational interior nodes.
-template <int S>
-constexpr exact_rkn_tableau collocation_tableau_from_nodes(const std::array<rational, S>& nodes) {
+namespace analysis::detail {
+
+/// Sign (-1, 0, 1) of the polynomial p (ascending, degree deg) at x = 0 and x = 1.
+constexpr int sign_at(const exact_number* p, int deg, bool at_one) {
+  if (!at_one) return p[0].sign();
+  exact_number sum;
+  for (int k = 0; k <= deg; ++k) sum = sum + p[k];
+  return sum.sign();
+}
+
+/// Number of distinct real roots in (0, 1] of a squarefree p (degree deg >= 1) with p(0) != 0,
+/// by Sturm's theorem: V(0) - V(1), V the sign changes of the Sturm sequence p, p', -rem, ...
+constexpr int sturm_roots_in_half_open_unit_interval(const exact_number* p, int deg) {
+  exact_number chain[max_exact_stages + 1][max_exact_stages + 1];
+  int degree[max_exact_stages + 1]{};
+  for (int k = 0; k <= deg; ++k) chain[0][k] = p[k];
+  degree[0] = deg;
+  for (int k = 1; k <= deg; ++k) chain[1][k - 1] = p[k] * exact_number(k);
+  degree[1] = deg - 1;
+  int length = 2;
+  while (degree[length - 1] > 0) {
+    // chain[length] = -(chain[length - 2] mod chain[length - 1])
+    exact_number r[max_exact_stages + 1];
+    const int dr0 = degree[length - 2], dd = degree[length - 1];
+    for (int k = 0; k <= dr0; ++k) r[k] = chain[length - 2][k];
+    int dr = dr0;
+    while (dr >= dd && dr >= 0) {
+      const exact_number f = r[dr] / chain[length - 1][dd];
+      for (int j = 0; j <= dd; ++j) r[dr - dd + j] = r[dr - dd + j] - f * chain[length - 1][j];
+      --dr;
+      while (dr >= 0 && r[dr].num.is_zero()) --dr;
+    }
+    if (dr < 0) throw std::domain_error("geomint: the node polynomial has a multiple root");
+    for (int k = 0; k <= dr; ++k) chain[length][k] = -r[k];
+    degree[length] = dr;
+    ++length;
+  }
+  auto changes = [&](bool at_one) {
+    int count = 0, last = 0;
+    for (int i = 0; i < length; ++i) {
+      const int sg = sign_at(chain[i], degree[i], at_one);
+      if (sg == 0) continue;
+      if (last != 0 && sg != last) ++count;
+      last = sg;
+    }
+    return count;
+  };
+  return changes(false) - changes(true);
+}
+
+/// Number of distinct roots of a squarefree p (degree deg >= 1) in the closed interval [0, 1].
+constexpr int roots_in_unit_interval(const exact_number* p, int deg) {
+  if (!p[0].num.is_zero()) return sturm_roots_in_half_open_unit_interval(p, deg);
+  if (deg == 1) return 1;  // p = c x
+  // x = 0 is a simple root: count it and the roots of p / x in (0, 1].
+  return 1 + sturm_roots_in_half_open_unit_interval(p + 1, deg - 1);
+}
+
+}  // namespace analysis::detail
+
+/// Collocation (LPF-type) tableau on user data: the s distinct rational interior nodes in [0, 1].
+template <class NodeEntry, std::size_t S>
+constexpr exact_rkn_tableau collocation_tableau_from_nodes(const std::array<NodeEntry, S>& nodes) {
+  static_assert(std::is_same_v<NodeEntry, rational>,
+                "geomint::collocation_tableau_from_nodes: the nodes must be exact geomint::rational (floating-point "
+                "nodes are not exact; for irrational nodes pass their node polynomial)");
   static_assert(S >= 1 && S <= max_exact_stages, "geomint::collocation_tableau_from_nodes: 1..8 nodes");
   analysis::detail::exact_poly_buffer p;
   p.c[0] = exact_number(1);
-  for (int i = 0; i < S; ++i) {
-    for (int j = 0; j < i; ++j)
-      if (nodes[static_cast<std::size_t>(i)] == nodes[static_cast<std::size_t>(j)])
-        throw std::domain_error("geomint::collocation_tableau_from_nodes: the nodes must be distinct");
-    const exact_number root(nodes[static_cast<std::size_t>(i)]);
-    for (int k = i + 1; k >= 0; --k) p.c[k] = (k >= 1 ? p.c[k - 1] : exact_number(0)) - root * p.c[k];
+  for (std::size_t i = 0; i < S; ++i) {
+    if (nodes[i] < rational(0) || nodes[i] > rational(1))
+      throw std::domain_error("geomint::collocation_tableau_from_nodes: the nodes must lie in [0, 1]");
+    for (std::size_t j = 0; j < i; ++j)
+      if (nodes[i] == nodes[j]) throw std::domain_error("geomint::collocation_tableau_from_nodes: the nodes must be distinct");
+    const exact_number root(nodes[i]);
+    for (int k = static_cast<int>(i) + 1; k >= 0; --k) p.c[k] = (k >= 1 ? p.c[k - 1] : exact_number(0)) - root * p.c[k];
   }
-  return analysis::detail::collocation_tableau(p.c, S);
+  return analysis::detail::collocation_tableau(p.c, static_cast<int>(S));
+}
+/// The same with the number of nodes given, for braced lists: `collocation_tableau_from_nodes<3>({...})`.
+template <int S>
+constexpr exact_rkn_tableau collocation_tableau_from_nodes(const std::array<rational, S>& nodes) {
+  return collocation_tableau_from_nodes<rational, S>(nodes);
 }
 
-/// Collocation tableau on the roots of a node polynomial with rational coefficients
-/// (ascending, degree S; the roots must be simple, which is checked: gcd(N, N') = 1).
-template <int S>
-constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array<rational, S + 1>& coefficients) {
-  static_assert(S >= 1 && S <= max_exact_stages, "geomint::collocation_tableau_from_polynomial: degree 1..8");
+/// Collocation tableau on the roots of a node polynomial with rational coefficients (ascending:
+/// degree + 1 coefficients, degree 1..8). Checked: the leading coefficient is nonzero, the roots
+/// are simple (the Euclidean remainder sequence of N and N' ends in a nonzero constant) and all
+/// real in [0, 1] (Sturm's theorem, exactly).
+template <class CoefficientEntry, std::size_t K>
+constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array<CoefficientEntry, K>& coefficients) {
+  static_assert(std::is_same_v<CoefficientEntry, rational>,
+                "geomint::collocation_tableau_from_polynomial: the coefficients must be exact geomint::rational");
+  static_assert(K >= 2 && K <= max_exact_stages + 1,
+                "geomint::collocation_tableau_from_polynomial: the node polynomial must have degree 1..8 (pass degree + 1 "
+                "coefficients, ascending powers)");
+  constexpr int S = static_cast<int>(K) - 1;
   analysis::detail::exact_poly_buffer p;
   for (int k = 0; k <= S; ++k) p.c[k] = exact_number(coefficients[static_cast<std::size_t>(k)]);
-  if (p.c[S].num.is_zero()) throw std::domain_error("geomint::collocation_tableau_from_polynomial: the leading coefficient is zero");
+  if (p.c[S].num.is_zero())
+    throw std::domain_error("geomint::collocation_tableau_from_polynomial: the leading coefficient is zero (the degree is "
+                            "the number of coefficients minus one)");
   analysis::detail::make_monic(p.c, S);
   // Simple roots: the Euclidean remainder sequence of N and N' ends in a nonzero constant.
   exact_number u[max_exact_stages + 1], w[max_exact_stages + 1];
@@ -394,7 +490,14 @@ constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array
     du = dw;
     dw = t;
   }
+  if (analysis::detail::roots_in_unit_interval(p.c, S) != S)
+    throw std::domain_error("geomint::collocation_tableau_from_polynomial: the roots must be real and lie in [0, 1]");
   return analysis::detail::collocation_tableau(p.c, S);
+}
+/// The same with the degree given, for braced lists: `collocation_tableau_from_polynomial<2>({...})`.
+template <int S>
+constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array<rational, S + 1>& coefficients) {
+  return collocation_tableau_from_polynomial<rational, S + 1>(coefficients);
 }
 
 /// The usual numeric tableau (c_i, a_ij, bbar_j, b_j) in a scalar type T.
@@ -409,12 +512,12 @@ struct numeric_rkn_tableau {
 namespace analysis::detail {
 template <class T>
 T to_scalar(const exact_number& x) {
-  return T(x.num.str()) / T(x.den.str());
+  return T(x.num.str()) / T(x.den().str());
 }
 template <class T>
   requires std::is_floating_point_v<T>
 T to_scalar(const exact_number& x) {
-  return static_cast<T>(std::stold(x.num.str())) / static_cast<T>(std::stold(x.den.str()));
+  return static_cast<T>(std::stold(x.num.str())) / static_cast<T>(std::stold(x.den().str()));
 }
 }  // namespace analysis::detail
 

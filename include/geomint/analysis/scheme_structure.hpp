@@ -31,12 +31,6 @@ struct symplecticity_result {
   bool second_condition = false;  ///< b_i (bbar_j - a_ij) = b_j (bbar_i - a_ji)
   exact_number first_defect[max_exact_stages];                     ///< d1 on the basis
   exact_number second_defect[max_exact_stages][max_exact_stages];  ///< d2 on the basis
-  constexpr symplecticity_result() {  // every element assigned explicitly: see stage_vector
-    for (int i = 0; i < max_exact_stages; ++i) {
-      first_defect[i] = exact_number(0);
-      for (int j = 0; j < max_exact_stages; ++j) second_defect[i][j] = exact_number(0);
-    }
-  }
   friend constexpr bool operator==(const symplecticity_result&, const symplecticity_result&) = default;
 };
 
@@ -47,35 +41,46 @@ struct symmetry_result {
   exact_number a_defect[max_exact_stages][max_exact_stages];  ///< A* - P A P
   exact_number bbar_defect[max_exact_stages];                 ///< bbar* - bbar P
   exact_number b_defect[max_exact_stages];                    ///< b - b P
-  constexpr symmetry_result() {  // every element assigned explicitly: see stage_vector
-    for (int i = 0; i < max_exact_stages; ++i) {
-      bbar_defect[i] = exact_number(0);
-      b_defect[i] = exact_number(0);
-      for (int j = 0; j < max_exact_stages; ++j) a_defect[i][j] = exact_number(0);
-    }
-  }
   friend constexpr bool operator==(const symmetry_result&, const symmetry_result&) = default;
 };
 
+/// Both forms need b of a product e_k * w only. In the values basis that is b_k w_k; in the
+/// monomial basis it is sum_j w_j b(x^(k+j) mod N), so the quadrature values b(x^n mod N),
+/// n <= 2s - 1, are computed once (O(s^3) in all, instead of one product modulo N per pair).
 constexpr symplecticity_result symplecticity(const exact_rkn_tableau& t) {
   symplecticity_result r;
   const int s = t.stages;
+  exact_number moment[2 * max_exact_stages];  // b(x^n mod N), monomial basis only
+  if (t.basis == stage_basis::monomial) {
+    stage_vector power = t.one;
+    for (int n = 0; n < 2 * s; ++n) {
+      moment[n] = t.apply_b(power);
+      if (n + 1 < 2 * s) power = t.multiply_by_nodes(power);
+    }
+  }
+  auto b_of_product = [&](int k, auto&& w_entry) {  // b(e_k * w), w_entry(j) = w_j
+    if (t.basis == stage_basis::values) return t.b[k] * w_entry(k);
+    exact_number sum;
+    for (int j = 0; j < s; ++j) {
+      const exact_number w = w_entry(j);
+      if (!w.num.is_zero() && !moment[k + j].num.is_zero()) sum = sum + w * moment[k + j];
+    }
+    return sum;
+  };
   r.first_condition = true;
   r.second_condition = true;
   for (int k = 0; k < s; ++k) {
-    const stage_vector e = t.unit(k);
-    stage_vector one_minus_x_e = e;
-    const stage_vector xe = t.multiply(t.c, e);
-    for (int i = 0; i < s; ++i) one_minus_x_e[i] = e[i] - xe[i];
-    r.first_defect[k] = t.apply_bbar(e) - t.apply_b(one_minus_x_e);
+    // d1(e_k) = bbar(e_k) - b(e_k) + b(e_k * x)
+    r.first_defect[k] = t.bbar[k] - t.b[k] + b_of_product(k, [&](int j) { return t.c[j]; });
     if (!r.first_defect[k].num.is_zero()) r.first_condition = false;
   }
+  // d2(e_k, e_l) = b_k bbar_l - b(e_k * A e_l) - b_l bbar_k + b(e_l * A e_k); (A e_l)_j = a_jl.
   for (int k = 0; k < s; ++k)
-    for (int l = 0; l < s; ++l) {
-      const stage_vector u = t.unit(k), v = t.unit(l);
-      const exact_number d = t.apply_b(u) * t.apply_bbar(v) - t.apply_b(t.multiply(u, t.apply_a(v))) -
-                             t.apply_b(v) * t.apply_bbar(u) + t.apply_b(t.multiply(v, t.apply_a(u)));
+    for (int l = k + 1; l < s; ++l) {
+      const exact_number d = t.b[k] * t.bbar[l] - b_of_product(k, [&](int j) { return t.a[j][l]; }) - t.b[l] * t.bbar[k] +
+                             b_of_product(l, [&](int j) { return t.a[j][k]; });
       r.second_defect[k][l] = d;
+      r.second_defect[l][k] = -d;  // antisymmetric; the diagonal is 0
       if (!d.num.is_zero()) r.second_condition = false;
     }
   r.symplectic = r.first_condition && r.second_condition;
