@@ -6,6 +6,7 @@
 ///   double.csv     the planar double pendulum in Cartesian coordinates (two rods, constrained
 ///                  LPF) and in angles (unconstrained LPF), positions side by side.
 /// Usage: geomint-constraints-demo OUT_DIR [--circle-steps N]
+#include <geomint/core/multiprecision.hpp>  // Boost.Multiprecision scalars (included after geomint below)
 #include <geomint/constrained_integrator.hpp>
 #include <geomint/integrator.hpp>
 #include <geomint/mechanics/constrained_systems.hpp>

@@ -11,6 +11,7 @@
 #include "geomint/linalg/lu_small.hpp"
 #include "geomint/mechanics/constraint.hpp"
 #include "geomint/schemes/constrained_lpf.hpp"
+#include "geomint/schemes/step_path.hpp"
 #include "geomint/solvers/phase_state.hpp"
 
 namespace geomint {
@@ -25,6 +26,10 @@ class constrained_integrator {
   static constexpr int c = Con::count;
   using vector = vec<T, n>;
   using state = phase_state<T, n>;
+  /// Dense output of one step: the path fitted on [t_k, t_{k+1}] (schemes/step_path.hpp). It
+  /// meets the constraints at the nodes where the scheme imposes them, not in between, and its
+  /// end velocity is the one before the momentum projection.
+  using path = step_path<T, n, Scheme::m, typename Scheme::family, typename Scheme::basis>;
 
   /// The Newton options are validated here (std::invalid_argument for max_iterations < 1 etc.).
   constrained_integrator(const Sys& sys, const Con& con, const T& tau, newton_options<T> opt = {})
@@ -104,6 +109,27 @@ class constrained_integrator {
   /// `count` steps; throws on the first failure.
   void advance(state& s, long count) const {
     for (long i = 0; i < count; ++i) step(s);
+  }
+
+  /// One step and its path (see `path`); throws integration_error on failure.
+  path step_with_path(state& s) const {
+    path out;
+    const step_status st = try_step_with_path(s, out);
+    if (!st) throw integration_error(st);
+    return out;
+  }
+  /// As step_with_path without throwing: on failure s and `out` are unchanged.
+  step_status try_step_with_path(state& s, path& out) const {
+    const step_status in = check_step_input(s.step, tau_, s.q, s.p);
+    if (!in) return in;
+    vector q1, p1;
+    typename Scheme::template engine<Sys, Con, T>::unknowns z;
+    const vector q0 = s.q;
+    const T t0 = s.t;
+    const step_status st = finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z), q1, p1, tau_, monitor_,
+                                       [this](const vector& q, const vector& p) { return energy(q, p); });
+    if (st) out = path(t0, s.t, tau_, engine_.method().path(q0, z));
+    return st;
   }
 
   /// The two-step form; `drop` gives the paper's printed scheme (23) for the circle.

@@ -12,6 +12,7 @@
 #include "geomint/core/differentiation.hpp"
 #include "geomint/core/quadrature.hpp"
 #include "geomint/core/multiprecision.hpp"
+#include "geomint/core/decimal.hpp"
 // ad, linalg, solvers: forward-mode AD, small dense linear algebra, Newton, the step contract
 #include "geomint/ad/dual.hpp"
 #include "geomint/linalg/types.hpp"

@@ -7,6 +7,7 @@
 ///   I.step(s);                              // (q_k, p_k) -> (q_{k+1}, p_{k+1}); throws integration_error
 ///   auto [x0, x1] = I.start(q0, qdot0);     // consistent start of the two-step form
 ///   auto x2 = I.two_step(x0, x1);           // (x^{k-1}, x^k) -> x^{k+1} (eq. 11-12; schemes 16-22)
+///   auto path = I.step_with_path(s);        // one step and its path: path.position(t), path.velocity(t)
 
 #include <type_traits>
 #include <utility>
@@ -14,12 +15,17 @@
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/lpf.hpp"
 #include "geomint/schemes/paper_schemes.hpp"
+#include "geomint/schemes/step_path.hpp"
 #include "geomint/solvers/phase_state.hpp"
 
 namespace geomint {
 
 template <class Scheme, class Sys, class T>
 class integrator {
+  static_assert(eigen_scalar_ready<T>::value,
+                "geomint::integrator: T is a Boost.Multiprecision number but its Eigen traits are not included: "
+                "#include <geomint/core/multiprecision.hpp> (or <geomint/geomint.hpp>, or a Boost.Multiprecision "
+                "header before geomint's headers)");
   static_assert(checked_system<Sys, T>, "geomint::integrator: Sys does not satisfy the system contract (see above)");
   static_assert(!is_dual<T>::value, "geomint::integrator: T is the working scalar (double, a Boost.Multiprecision type), not a dual");
 
@@ -30,6 +36,8 @@ class integrator {
   using system = Sys;
   using vector = vec<T, n>;
   using state = phase_state<T, n>;
+  /// The dense output of one step (step_path; void for a scheme without a polynomial path).
+  using path = typename scheme_path<Scheme, T, n>::type;
 
   /// tau is checked at every step (an invalid tau is reported with the step index).
   /// The Newton options are validated here (std::invalid_argument for max_iterations < 1 etc.).
@@ -92,6 +100,34 @@ class integrator {
   /// `count` steps; throws on the first failure.
   void advance(state& s, long count) const {
     for (long i = 0; i < count; ++i) step(s);
+  }
+
+  /// Dense output: one step (as `step`) that also returns the polynomial path it fitted on
+  /// [t_k, t_{k+1}], to evaluate x(t) and xdot(t) anywhere in the step (schemes/step_path.hpp;
+  /// its accuracy is documented there). For midpoint_vi and trapezoidal_vi the path is the
+  /// straight segment (linear interpolation).
+  auto step_with_path(state& s) const
+    requires scheme_with_path<Scheme>
+  {
+    path out;
+    const step_status st = try_step_with_path(s, out);
+    if (!st) throw integration_error(st);
+    return out;
+  }
+  /// As step_with_path without throwing: on failure s and `out` are unchanged.
+  template <class Path>
+    requires(scheme_with_path<Scheme> && std::is_same_v<Path, path>)
+  step_status try_step_with_path(state& s, Path& out) const {
+    const step_status in = check_step_input(s.step, tau_, s.q, s.p);
+    if (!in) return in;
+    vector q1 = vector::Zero(), p1 = vector::Zero();
+    typename Scheme::template engine<Sys, T>::unknowns z;
+    const vector q0 = s.q;
+    const T t0 = s.t;
+    const step_status st = finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z), q1, p1, tau_, monitor_,
+                                       [this](const vector& q, const vector& p) { return energy(q, p); });
+    if (st) out = Path(t0, s.t, tau_, engine_.method().path(q0, z));
+    return st;
   }
 
   /// The two-step form (x^{k-1}, x^k) -> x^{k+1} (eq. 3/11): the momentum at t_k from the path

@@ -111,6 +111,35 @@ TEST_CASE("constrained LPF on the circle converges at the order of the free sche
   CHECK(std::abs(order3 - 4) < 0.05);
 }
 
+/// Dense output of the constrained integrator (schemes/step_path.hpp): max error of the path over
+/// [0, 4] (9 points per step) against q(t) = (cos t, sin t), in 50 digits. Expected order
+/// min(m + 1, p) = 4 for m = 3 on Gauss-Lobatto nodes (p = 4 at the nodes, the test above).
+TEST_CASE("constrained LPF: dense output on the circle", "[constraints][step_path]") {
+  using T = geomint::test::cpp_bin_float_50;
+  using geomint::systems::free_particle_2d;
+  using geomint::systems::unit_circle;
+  using Scheme = geomint::constrained_lpf<3, geomint::gauss_lobatto>;
+  auto error = [](const T& tau, long steps) {
+    const geomint::constrained_integrator<Scheme, free_particle_2d, unit_circle, T> integrator({}, {}, tau);
+    auto s = integrator.initial_state(on_circle(T(0)), vec<T, 2>(T(0), T(1)));
+    T worst(0);
+    for (long k = 0; k < steps; ++k) {
+      const auto path = integrator.step_with_path(s);
+      for (int j = 0; j <= 8; ++j) {
+        const T t = path.t_begin() + T(j) * tau / T(8);
+        const T e = (path.position(t) - on_circle(t)).template lpNorm<Eigen::Infinity>();
+        if (e > worst) worst = e;
+      }
+      if (k == 0) CHECK_THROWS_AS(path.position(T(2) * tau), std::out_of_range);
+    }
+    return worst;
+  };
+  using std::log2;
+  const double order = static_cast<double>(log2(T(error(T(1) / T(5), 20) / error(T(1) / T(10), 40))));
+  INFO("observed dense-output order " << order);
+  CHECK(std::abs(order - 4) < 0.35);
+}
+
 TEMPLATE_LIST_TEST_CASE("constrained LPF: spherical pendulum conserves vertical angular momentum (Noether)",
                         "[constraints][spherical]", geomint::test::integrator_scalar_types) {
   using T = TestType;

@@ -6,9 +6,20 @@
 /// positive_real_hypot names (it is used by the Givens rotations of the eigen-solvers and the
 /// stable norms). Where those members are missing, hypot_impl for Boost numbers is routed to
 /// Boost's own hypot; where a newer Boost provides them, this specialisation drops out.
+///
+/// Include this header (or geomint/geomint.hpp, or any Boost.Multiprecision header before
+/// geomint's own headers) to use Boost.Multiprecision scalars with geomint.
 #include <Eigen/Core>
 #include <boost/multiprecision/eigen.hpp>
 #include <boost/multiprecision/number.hpp>
+
+#include "geomint/linalg/types.hpp"
+
+namespace geomint {
+/// Eigen has the traits of every Boost.Multiprecision number from here on (linalg/types.hpp).
+template <class Backend, boost::multiprecision::expression_template_option ET>
+struct eigen_scalar_ready<boost::multiprecision::number<Backend, ET>> : std::true_type {};
+}  // namespace geomint
 
 namespace geomint::core::detail {
 template <class Traits>
@@ -25,19 +36,4 @@ struct hypot_impl<boost::multiprecision::number<Backend, ET>> {
 };
 }  // namespace Eigen::internal
 
-#include <cstdlib>
-#include <type_traits>
-
-namespace geomint {
-
-/// A decimal constant read in the precision of T: strtof/strtod/strtold for the built-in types
-/// (correctly rounded), the multiprecision type's own parser otherwise. Never through double.
-template <class T>
-T from_decimal(const char* text) {
-  if constexpr (std::is_same_v<T, float>) return std::strtof(text, nullptr);
-  else if constexpr (std::is_same_v<T, double>) return std::strtod(text, nullptr);
-  else if constexpr (std::is_floating_point_v<T>) return static_cast<T>(std::strtold(text, nullptr));
-  else return T(text);
-}
-
-}  // namespace geomint
+#include "geomint/core/decimal.hpp"  // from_decimal, for the users of this header

@@ -21,12 +21,13 @@
 #include <array>
 #include <cmath>
 #include <concepts>
+#include <cstddef>
 #include <limits>
 #include <utility>
 #include <string_view>
 #include <type_traits>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include "geomint/ad/dual.hpp"
 #include "geomint/linalg/lu_small.hpp"
 #include "geomint/linalg/types.hpp"
@@ -231,10 +232,38 @@ struct lagrangian_derivatives {
     }
   }
 
+  /// Bytes of the fully nested Hessian duals of a natural system's position vector; above 64 KiB
+  /// (half of Eigen's fixed-size stack limit) the Hessian is built column by column instead.
+  static constexpr std::size_t full_hessian_bytes = sizeof(dual<dual<T, n>, n>) * static_cast<std::size_t>(n);
+
   /// First and second derivatives: two nested levels of AD.
   static hessian_data<T, n> hessian(const Sys& sys, const V& x, const V& v) {
     hessian_data<T, n> h;
-    if constexpr (natural_system<Sys>) {
+    if constexpr (natural_system<Sys> && full_hessian_bytes > 64 * 1024) {
+      // Many degrees of freedom in a wide scalar (e.g. the outer solar system in 50 digits):
+      // one directional second derivative per column, outer dual<., 1> along e_j over the
+      // gradient duals: n evaluations of V with 2(n + 1) components each, instead of one with
+      // (n + 1)^2, which would not fit Eigen's fixed-size stack limit.
+      using D1 = dual<T, n>;
+      using D2 = dual<D1, 1>;
+      for (int j = 0; j < n; ++j) {
+        vec<D2, n> qd;
+        for (int i = 0; i < n; ++i) {
+          qd[i] = D2(D1::variable(x[i], i));
+          if (i == j) qd[i].d[0] = D1(T(1));
+        }
+        const D2 pot = Sys::template potential<D2>(qd);
+        for (int i = 0; i < n; ++i) {
+          if (j == 0) h.Lq[i] = -pot.v.d[static_cast<std::size_t>(i)];
+          h.Lqq(i, j) = -pot.d[0].d[static_cast<std::size_t>(i)];
+        }
+      }
+      const Mt M = Sys::template mass_matrix<T>();
+      h.Lv = M * v;
+      h.Lqv.setZero();
+      h.Lvq.setZero();
+      h.Lvv = M;
+    } else if constexpr (natural_system<Sys>) {
       using D1 = dual<T, n>;
       using D2 = dual<D1, n>;
       vec<D2, n> qd;

@@ -17,7 +17,7 @@
 #include <string_view>
 #include <type_traits>
 
-#include "geomint/core/multiprecision.hpp"
+#include "geomint/core/decimal.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
 
 namespace geomint::zoo {
@@ -214,7 +214,7 @@ struct outer_solar : natural<outer_solar, 18> {
     vec<T, 3> out = vec<T, 3>::Zero();
     for (int i = 0; i < bodies; ++i) {
       const vec<T, 3> qi = q.template segment<3>(3 * i), pi = p.template segment<3>(3 * i);
-      out += qi.cross(pi);
+      out += vec<T, 3>(qi[1] * pi[2] - qi[2] * pi[1], qi[2] * pi[0] - qi[0] * pi[2], qi[0] * pi[1] - qi[1] * pi[0]);
     }
     return out;
   }

@@ -179,6 +179,8 @@ struct galerkin_vi {
   static_assert(node_family<Family>, "geomint::galerkin_vi: invalid node family");
   static_assert(basis_kind<Basis>, "geomint::galerkin_vi: Basis must be lagrange or bernstein");
   static constexpr int m = M;
+  using family = Family;
+  using basis = Basis;
   static std::string name() { return "galerkin(m=" + std::to_string(M) + ", gauss-" + std::to_string(M) + ")"; }
 
   template <class Sys, class T>
@@ -204,6 +206,10 @@ struct galerkin_vi {
 /// The midpoint-rule variational integrator: the paper's scheme (17) for the harmonic oscillator.
 struct midpoint_vi {
   static std::string name() { return "midpoint"; }
+  /// The path is the segment from x^k to x^{k+1}: dense output is linear interpolation.
+  static constexpr int m = 1;
+  using family = equispaced;
+  using basis = lagrange;
   template <class Sys, class T>
   using method = schemes::detail::galerkin_method<Sys, T, 1, 1, lagrange>;
   template <class Sys, class T>
@@ -219,6 +225,10 @@ struct midpoint_vi {
 /// The trapezoidal variational integrator (Stormer-Verlet for natural systems).
 struct trapezoidal_vi {
   static std::string name() { return "trapezoidal"; }
+  /// The path is the segment from x^k to x^{k+1}: dense output is linear interpolation.
+  static constexpr int m = 1;
+  using family = equispaced;
+  using basis = lagrange;
   template <class Sys, class T>
   using method = schemes::detail::galerkin_method<Sys, T, 1, 2, lagrange>;
   template <class Sys, class T>

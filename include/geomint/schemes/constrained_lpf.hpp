@@ -82,6 +82,13 @@ class constrained_lpf_method {
     return st;
   }
 
+  /// The control points X_0..X_m of the path fitted on the step from q_k with unknowns z.
+  controls path(const V& q, const Z& z) const {
+    controls X = unpack_path<T, n, M, unknowns>(z);
+    for (int j = 0; j <= M; ++j) X.col(j) += q;
+    return X;
+  }
+
   /// The two-step form (x^{k-1}, x^k) -> x^{k+1}: momentum at t_k from the constrained path on
   /// [t_{k-1}, t_k], then the forward solve with or without eq. (5)'s end terms.
   step_status two_step(const V& x_prev, const V& x_curr, const T& tau, endpoint_terms ends, V& x_next,
@@ -252,6 +259,8 @@ struct constrained_lpf {
                 "geomint::constrained_lpf: Family must be equispaced, gauss_lobatto, chebyshev_lobatto or gauss_interior");
   static_assert(basis_kind<Basis>, "geomint::constrained_lpf: Basis must be lagrange or bernstein");
   static constexpr int m = M;
+  using family = Family;
+  using basis = Basis;
   static std::string name() {
     return "constrained-lpf(m=" + std::to_string(M) + ", " + std::string(Family::name) + ", " +
            std::string(Basis::name) + ")";

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include "geomint/linalg/lu_small.hpp"
 #include "geomint/linalg/types.hpp"
