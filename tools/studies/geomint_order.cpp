@@ -104,10 +104,7 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
   // Reference states per system (key 0: t_end; key N: t_end / N).
   std::map<std::string, std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T>>>> refs;
   for (const std::string& system : sel.systems) {
-    if (system == "harmonic") refs[system] = reference_states<systems::harmonic, T, R>(t_end, counts);
-    if (system == "pendulum") refs[system] = reference_states<systems::pendulum, T, R>(t_end, counts);
-    if (system == "kepler") refs[system] = reference_states<systems::kepler, T, R>(t_end, counts);
-    if (system == "charged") refs[system] = reference_states<systems::charged, T, R>(t_end, counts);
+    tools::with_free_system(system, [&]<class Sys>() { refs[system] = reference_states<Sys, T, R>(t_end, counts); });
   }
   std::vector<analysis::order_result<T>> results(cases.size());
   std::vector<std::string> names(cases.size());

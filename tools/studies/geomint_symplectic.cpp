@@ -103,7 +103,7 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
   // Check --q0 / --p0 here: the workers below report failures per case, not usage errors.
   if (!x.q0.empty() || !x.p0.empty()) {
     const std::string& system = sel.systems.front();
-    const std::size_t n = system == "harmonic" || system == "pendulum" ? 1 : 2;
+    const auto n = static_cast<std::size_t>(tools::with_free_system(system, []<class Sys>() { return Sys::dof; }));
     for (const auto* v : {&x.q0, &x.p0}) {
       if (!v->empty() && v->size() != n)
         throw geomint::cli::usage_error("--q0 / --p0 need " + std::to_string(n) + " value(s) for " + system);

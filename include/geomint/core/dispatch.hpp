@@ -1,10 +1,8 @@
 #pragma once
 /// Run-time choices to compile-time types: the one dispatch mechanism of the library and its
 /// tools. A run-time m, node family or basis calls a generic lambda with the matching template
-/// argument, e.g.
-///
-///   geomint::with_int<2, 8>(m, [&]<int M>() { ... lpf<M, ...> ... });
-///   geomint::with_node_family("gauss_interior", [&]<class Family>() { ... });
+/// argument, e.g. `geomint::with_int<2, 8>(m, [&]<int M>() { ... })` or
+/// `geomint::with_node_family("gauss_interior", [&]<class Family>() { ... })`.
 ///
 /// Names: a family is accepted under its printed name (`Family::name`: equispaced, lobatto,
 /// chebyshev, gauss-interior) and under its type name (gauss_lobatto, chebyshev_lobatto,
