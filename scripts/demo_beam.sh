@@ -58,7 +58,7 @@ echo "--- 0.1 s at dt, dt/2, dt/4: energy and spatial momentum against dt, per v
 for v in previous current midpoint; do
   for run in "1000 1e-4" "2000 5e-5" "4000 2.5e-5"; do
     set -- $run
-    line=$("$exe" --scheme poisson --steps "$1" --dt "$2" --every "$1" --cayley "$v")
+    line=$("$exe" --scheme poisson --steps "$1" --dt "$2" --every 1 --cayley "$v")
     printf 'cayley %-8s dt %-7s %s; %s\n' "$v" "$2" "$(grep 'energy:' <<<"$line" | sed 's/^ *//')" \
       "$(grep 'momentum:' <<<"$line" | sed 's/^ *//')"
   done
