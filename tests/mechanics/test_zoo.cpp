@@ -159,3 +159,20 @@ TEST_CASE("zoo: Arenstorf orbit closes after its cited period", "[mechanics][zoo
   CHECK(abs(s.q[1] - q0[1]) <= T(1) / T(1000));
   CHECK(abs(I.energy(s) - H0) <= T(1) / T(1000000));
 }
+
+TEMPLATE_LIST_TEST_CASE("zoo: the tools' initial data have their stated invariants", "[mechanics][zoo]",
+                        geomint::test::integrator_scalar_types) {
+  using T = TestType;
+  // Henon-Heiles: q0 = 0, |qdot0|^2 = 9/100 + 16/100, so H = 1/8 exactly (zoo.hpp).
+  vec<T, 2> q, v;
+  zoo::henon_heiles::initial_data(q, v);
+  CHECK(abs_diff(zoo::henon_heiles::energy<T>(q, v), T(1) / T(8)) <= eps_tol<T>(4));
+  // Toda: zero total momentum; spring and double pendulum: released from rest.
+  vec<T, 3> q3, v3;
+  zoo::toda3::initial_data(q3, v3);
+  CHECK(abs_diff(zoo::toda3::total_momentum<T>(v3), T(0)) <= eps_tol<T>(4));
+  zoo::spring_pendulum::initial_data(q, v);
+  CHECK((v.array() == T(0)).all());
+  zoo::double_pendulum::initial_data(q, v);
+  CHECK((v.array() == T(0)).all());
+}

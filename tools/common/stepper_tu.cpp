@@ -1,11 +1,13 @@
-/// One (system, digits) instantiation of the tools' stepper factory (see CMakeLists.txt).
+/// The tools' stepper factory, instantiated for one built-in system (GEOMINT_STEPPER_SYSTEM, the
+/// qualified type, e.g. systems::pendulum) or for all zoo systems (GEOMINT_STEPPER_ZOO), in the
+/// scalar of GEOMINT_STEPPER_DIGITS (see CMakeLists.txt).
 #include <stdexcept>
 #include <string>
 
 #include "stepper.hpp"
 
-#if !defined(GEOMINT_STEPPER_SYSTEM) || !defined(GEOMINT_STEPPER_DIGITS)
-#error "define GEOMINT_STEPPER_SYSTEM and GEOMINT_STEPPER_DIGITS"
+#if !(defined(GEOMINT_STEPPER_SYSTEM) || defined(GEOMINT_STEPPER_ZOO)) || !defined(GEOMINT_STEPPER_DIGITS)
+#error "define GEOMINT_STEPPER_SYSTEM (or GEOMINT_STEPPER_ZOO) and GEOMINT_STEPPER_DIGITS"
 #endif
 
 namespace geomint::tools {
@@ -17,11 +19,25 @@ std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec) {
   throw std::invalid_argument(std::to_string(std::numeric_limits<T>::digits10) +
                               "-digit arithmetic is not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF)");
 #else
-  return geomint::make_stepper<Sys, T>(spec);
+  if constexpr (is_zoo_system<Sys>)
+    return make_zoo_stepper<Sys, T>(spec);
+  else
+    return geomint::make_stepper<Sys, T>(spec);
 #endif
 }
 
 using scalar = scalar_for_digits<GEOMINT_STEPPER_DIGITS>;
-template std::unique_ptr<any_stepper<scalar>> make_system_stepper<systems::GEOMINT_STEPPER_SYSTEM, scalar>(const scheme_spec&);
+#if defined(GEOMINT_STEPPER_ZOO)
+// The zoo systems of free_system_types (stepper.hpp), in one unit: their restricted factories
+// are small, and one unit pays the headers' parse time (about 5 s) once instead of six times.
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::henon_heiles, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::spring_pendulum, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::double_pendulum, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::toda3, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::outer_solar, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::arenstorf, scalar>(const scheme_spec&);
+#else
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<GEOMINT_STEPPER_SYSTEM, scalar>(const scheme_spec&);
+#endif
 
 }  // namespace geomint::tools

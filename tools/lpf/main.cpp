@@ -6,11 +6,13 @@
 #include "cli.hpp"
 #include "digits.hpp"
 #include "run.hpp"
+#include "stepper.hpp"
 
 namespace {
 
 const char* usage =
-    "usage: geomint-run [--system harmonic|pendulum|kepler|charged|circle|spherical]\n"
+    "usage: geomint-run [--system harmonic|pendulum|kepler|charged|circle|spherical|henon-heiles|\n"
+    "                             spring-pendulum|double-pendulum|toda|outer-solar|arenstorf]\n"
     "                   [--scheme lpf|midpoint|trapezoidal|galerkin|paper23]\n"
     "                   [--nodes equispaced|lobatto|chebyshev|gauss-interior (or gauss_lobatto, ...)]\n"
     "                   [--basis lagrange|bernstein]\n"
@@ -27,7 +29,11 @@ const char* usage =
     "lpf (the constrained integrator: f = 0 at every node and step, projected momenta) or paper23\n"
     "(the paper's scheme (23) as printed); spherical (unit spherical pendulum, f = |q|^2 - 1;\n"
     "q0=(sin,0,-cos)(pi/4), p0=(0,0.8,0)) with --scheme lpf. Their CSV adds a constraint column,\n"
-    "max |f_l(q)|; initial data off the constraint or with a normal velocity are rejected.\n";
+    "max |f_l(q)|; initial data off the constraint or with a normal velocity are rejected.\n"
+    "The problem zoo (geomint/mechanics/zoo.hpp): henon-heiles, spring-pendulum, double-pendulum,\n"
+    "toda, outer-solar, arenstorf, each from its documented initial data, with a restricted scheme\n"
+    "set: midpoint; lpf --nodes gauss-interior --basis lagrange --m 2..4; galerkin --m 2..3;\n"
+    "--digits 16|50 (outer-solar in 50 digits: m = 2 only). Anything else is a usage error.\n";
 
 /// Runs the chosen system and scheme in the chosen scalar; returns the exit status.
 int dispatch(const geomint::run::options& o) {
@@ -48,7 +54,9 @@ int main(int argc, char** argv) {
   options o;
   cli::parser cl("geomint-run", usage);
   cl.value("--system", [&](const std::string& v) {
-      o.system = cli::parse_choice("--system", v, {"harmonic", "pendulum", "kepler", "charged", "circle", "spherical"});
+      std::vector<std::string> systems = geomint::tools::free_systems();
+      systems.insert(systems.end(), {"circle", "spherical"});
+      o.system = cli::parse_choice("--system", v, systems);
     })
       .value("--scheme", [&](const std::string& v) {
         o.scheme = cli::parse_choice("--scheme", v, {"lpf", "midpoint", "trapezoidal", "galerkin", "paper23"});

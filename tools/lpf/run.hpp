@@ -21,8 +21,8 @@ struct options {
   bool monitor = true;  ///< the step monitor (geomint/solvers/step_monitor.hpp); --no-monitor turns it off
 };
 
-/// The free systems (harmonic, pendulum, kepler, charged) in the scalar of `--digits D`
-/// (run_free.cpp).
+/// The free systems (the built-in harmonic, pendulum, kepler, charged and the zoo systems of
+/// tools/common/stepper.hpp) in the scalar of `--digits D` (run_free.cpp).
 template <int Digits>
 int run_free(const options&);
 

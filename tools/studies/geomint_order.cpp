@@ -21,7 +21,7 @@ using boost::multiprecision::backends::cpp_bin_float;
 
 const char* usage =
     "usage: geomint-order [--system S[,S...]|all] [--scheme S[,S...]|all] [--nodes F[,F...]|all]\n"
-    "                     [--m M|A..B (2..8)] [--digits 50|100] [--steps N1,N2,... ] [--t-end T]\n"
+    "                     [--m M|A..B (2..8)] [--digits 16|50|100] [--steps N1,N2,... ] [--t-end T]\n"
     "                     [--threads K (1..64)] [--csv] [--no-monitor]\n"
     "Local error (one step) and global error (at t = T) of each scheme against the exact flow, for\n"
     "tau = T/N over the ladder N1 < N2 < ... (default T = 1, N = 8,16,32,64), in --digits digit\n"
@@ -32,6 +32,11 @@ const char* usage =
     "  systems: harmonic, pendulum, kepler, charged (all); initial data as geomint-run\n"
     "  schemes: lpf, midpoint, trapezoidal, galerkin (all)\n"
     "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n"
+    "Zoo systems (zoo): henon-heiles, spring-pendulum, double-pendulum, toda, outer-solar, arenstorf,\n"
+    "with the restricted scheme set (midpoint; lpf --nodes gauss-interior --m 2..4; galerkin --m 2..3),\n"
+    "are studied in double (--digits 16, which they require); their reference flow is the Galerkin\n"
+    "VI of degree 3 (outer-solar: 2) in 50 digits, the step halved until two runs agree to 16 eps\n"
+    "of double. The built-in systems need --digits 50|100.\n"
     "--steps: 2 to 16 increasing counts in 1..10^9.\n"
     "CSV header: system,scheme,nodes,m,local_order,global_order,error_constant,regime\n"
     "(m and nodes are '-' where a scheme has none). regime is 'ok' when the observed orders look\n"
@@ -98,13 +103,79 @@ std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T
   return out;
 }
 
+/// The reference states at t_end / N (and t_end) of a zoo system, computed in the scalar R by
+/// the Galerkin VI of the highest degree the zoo's R factory has (tools/common/stepper.hpp) from
+/// the study's initial state (q0, p0), with the step count doubled (from the study's finest step)
+/// until two successive runs agree to 16 eps of T relative to max(1, |q|, |p|); the same check
+/// as analysis::galerkin_reference (analysis/any_system.hpp), which uses degree 8.
+template <class Sys, class T, class R>
+std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T>>> zoo_reference_states(
+    const analysis::dynamic_vector<T>& q0, const analysis::dynamic_vector<T>& p0, const T& t_end, const std::vector<long>& counts) {
+  scheme_spec spec;
+  spec.scheme = "galerkin";
+  spec.m = tools::zoo_scheme_set<Sys, R>::galerkin_max_m;
+  const auto stepper = tools::make_stepper<R>(Sys::name, spec);
+  const dynamic_vector<R> qr0 = q0.template cast<R>(), pr0 = p0.template cast<R>();
+  const R tolerance = R(16) * R(std::numeric_limits<T>::epsilon());
+  auto run_steps = [&](const R& t, long steps, dynamic_vector<R>& q, dynamic_vector<R>& p) {
+    q = qr0;
+    p = pr0;
+    dynamic_vector<R> q1, p1;
+    const R tau = t / R(steps);
+    for (long k = 0; k < steps; ++k) {
+      const step_status st = stepper->try_step(q, p, tau, q1, p1);
+      if (!st) throw std::runtime_error("reference flow (" + stepper->name() + ", 50 digits): " + st.message());
+      q = q1;
+      p = p1;
+    }
+  };
+  std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T>>> out;
+  auto store = [&](long key, long start_steps) {
+    const R t = key == 0 ? R(t_end) : R(t_end) / R(key);
+    long steps = std::max(2L, start_steps);
+    dynamic_vector<R> qa, pa, qb, pb;
+    run_steps(t, steps, qa, pa);
+    for (int refinement = 0; refinement < 20; ++refinement) {
+      steps *= 2;
+      run_steps(t, steps, qb, pb);
+      using std::max;
+      const R change = max(R((qb - qa).template lpNorm<Eigen::Infinity>()), R((pb - pa).template lpNorm<Eigen::Infinity>()));
+      const R scale = max(R(1), max(R(qb.template lpNorm<Eigen::Infinity>()), R(pb.template lpNorm<Eigen::Infinity>())));
+      if (change <= tolerance * scale) {
+        out[key] = {qb.template cast<T>(), pb.template cast<T>()};
+        return;
+      }
+      qa = qb;
+      pa = pb;
+    }
+    throw std::runtime_error("reference flow of " + std::string(Sys::name) + ": no agreement after 20 refinements");
+  };
+  store(0, counts.back());
+  for (long N : counts) store(N, 1);
+  return out;
+}
+
 template <class T, class R>
 int run(const geomint::studies::selection& sel, const T& t_end, const std::vector<long>& counts, bool monitor) {
   const auto cases = sel.cases();
   // Reference states per system (key 0: t_end; key N: t_end / N).
   std::map<std::string, std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T>>>> refs;
   for (const std::string& system : sel.systems) {
-    tools::with_free_system(system, [&]<class Sys>() { refs[system] = reference_states<Sys, T, R>(t_end, counts); });
+    tools::with_free_system(system, [&]<class Sys>() {
+      if constexpr (tools::is_zoo_system<Sys>) {
+        if constexpr (std::is_same_v<T, double>) {
+          const auto midpoint = tools::make_stepper<T>(system, scheme_spec{"midpoint"});
+          const auto [q0, qdot0] = tools::default_initial_data<T>(system);
+          refs[system] = zoo_reference_states<Sys, T, R>(q0, midpoint->momentum(q0, qdot0), t_end, counts);
+        } else {
+          throw cli::usage_error("--system " + system + ": the zoo systems are studied in 16 digits (--digits 16)");
+        }
+      } else if constexpr (std::is_same_v<T, double>) {
+        throw cli::usage_error("--system " + system + ": the built-in systems are studied in 50 or 100 digits");
+      } else {
+        refs[system] = reference_states<Sys, T, R>(t_end, counts);
+      }
+    });
   }
   std::vector<analysis::order_result<T>> results(cases.size());
   std::vector<std::string> names(cases.size());
@@ -145,7 +216,7 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
   int status = 0;
   if (sel.csv) std::cout << "system,scheme,nodes,m,local_order,global_order,error_constant,regime\n";
   else
-    std::cout << std::left << std::setw(10) << "system" << std::setw(13) << "scheme" << std::setw(16) << "nodes"
+    std::cout << std::left << std::setw(16) << "system" << std::setw(13) << "scheme" << std::setw(16) << "nodes"
               << std::setw(4) << "m" << std::right << std::setw(8) << "local" << std::setw(8) << "global"
               << std::setw(12) << "constant" << "   global errors at tau = T/N\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -167,7 +238,7 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
       std::cout << c.system << ',' << c.spec.scheme << ',' << c.spec.nodes_label() << ','
                 << geomint::studies::m_label(c.spec) << ',' << lo << ',' << go << ',' << ec << ',' << regime << '\n';
     } else {
-      std::cout << std::left << std::setw(10) << c.system << std::setw(13) << c.spec.scheme << std::setw(16)
+      std::cout << std::left << std::setw(16) << c.system << std::setw(13) << c.spec.scheme << std::setw(16)
                 << c.spec.nodes_label() << std::setw(4) << geomint::studies::m_label(c.spec) << std::right
                 << std::setw(8) << lo << std::setw(8) << go << std::setw(12) << ec << "  ";
       for (const T& e : r.global_errors) std::cout << ' ' << sci3(e);
@@ -192,7 +263,7 @@ int main(int argc, char** argv) {
   std::string t_end_text = "1";
   bool monitor = true;
   cli::parser cl("geomint-order", usage);
-  sel.register_flags(cl, {"50", "100"});
+  sel.register_flags(cl, {"16", "50", "100"});
   cl.value("--t-end", [&](const std::string& v) { t_end_text = cli::checked_real_text("--t-end", v, cli::real_bound::positive); })
       .value("--steps", [&](const std::string& v) {
         counts = cli::parse_integer_list<long>("--steps", v, 1, 1'000'000'000L, 2, 16);
@@ -209,14 +280,24 @@ int main(int argc, char** argv) {
       in >> t;
       return t;
     };
+    sel.check_cases();
+    for (const std::string& system : sel.systems)
+      if (tools::is_zoo_name(system) != (sel.digits == 16))
+        throw cli::usage_error("--system " + system + ": geomint-order studies the " +
+                               (sel.digits == 16 ? std::string("built-in systems in 50 or 100 digits")
+                                                 : std::string("zoo systems in 16 digits (--digits 16)")));
     int status = 0;
-    if (sel.digits == 50) {
+    if (sel.digits == 16) {
+      status = run<double, cpp_bin_float_50>(sel, parse_time(double()), counts, monitor);
+    } else if (sel.digits == 50) {
       status = run<cpp_bin_float_50, cpp_bin_float_100>(sel, parse_time(cpp_bin_float_50()), counts, monitor);
     } else {
       using float150 = number<cpp_bin_float<150>>;
       status = run<cpp_bin_float_100, float150>(sel, parse_time(cpp_bin_float_100()), counts, monitor);
     }
     return cli::finish_stdout("geomint-order", status);
+  } catch (const cli::usage_error& e) {
+    return cl.fail(e.what());
   } catch (const std::exception& e) {
     std::cerr << "geomint-order: " << e.what() << '\n';
     return 1;

@@ -27,6 +27,9 @@ const char* usage =
     "  systems: harmonic, pendulum, kepler, charged (all); default initial data as geomint-run\n"
     "  schemes: lpf, midpoint, trapezoidal, galerkin (all)\n"
     "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n"
+    "  zoo systems: henon-heiles, spring-pendulum, double-pendulum, toda, outer-solar, arenstorf\n"
+    "  (zoo) with the restricted scheme set: midpoint; lpf --nodes gauss-interior --m 2..4;\n"
+    "  galerkin --m 2..3; --digits 16|50 (outer-solar in 50 digits: m = 2); others exit with 2.\n"
     "CSV header: system,scheme,nodes,m,tau,defect  (plus max_energy_error,energy_drift with\n"
     "--long-steps), regime. regime is 'ok', 'failed', or 'outside: ...' for a result that is no\n"
     "measurement (a defect above 1: tau far outside the scheme's regime); any case not 'ok' makes\n"
@@ -149,7 +152,7 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
   if (sel.csv)
     std::cout << "system,scheme,nodes,m,tau,defect" << (longrun ? ",max_energy_error,energy_drift" : "") << ",regime\n";
   else
-    std::cout << std::left << std::setw(10) << "system" << std::setw(13) << "scheme" << std::setw(16) << "nodes"
+    std::cout << std::left << std::setw(16) << "system" << std::setw(13) << "scheme" << std::setw(16) << "nodes"
               << std::setw(4) << "m" << std::right << std::setw(11) << "defect"
               << (longrun ? "   max|H-H0|   dH/dt" : "") << '\n';
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -170,7 +173,7 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
       if (longrun) std::cout << ',' << r.max_energy << ',' << r.drift;
       std::cout << ',' << (r.failure.empty() ? r.regime : "failed");
     } else {
-      std::cout << std::left << std::setw(10) << c.system << std::setw(13) << c.spec.scheme << std::setw(16)
+      std::cout << std::left << std::setw(16) << c.system << std::setw(13) << c.spec.scheme << std::setw(16)
                 << c.spec.nodes_label() << std::setw(4) << geomint::studies::m_label(c.spec) << std::right
                 << std::setw(11) << r.defect;
       if (longrun) std::cout << std::setw(12) << r.max_energy << std::setw(10) << r.drift;
@@ -204,6 +207,7 @@ int main(int argc, char** argv) {
   try {
     if ((!x.q0.empty() || !x.p0.empty()) && sel.systems.size() != 1)
       throw cli::usage_error("--q0 / --p0 need a single --system");
+    sel.check_cases();
     int status = 0;
     if (sel.digits == 16) status = run<double>(sel, x);
     else if (sel.digits == 50) status = run<cpp_bin_float_50>(sel, x);

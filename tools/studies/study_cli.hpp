@@ -35,7 +35,12 @@ struct selection {
   /// Registers the flags common to the studies on the tool's parser.
   void register_flags(cli::parser& cl, std::vector<std::string> allowed_digits) {
     cl.toggle("--csv", [this] { csv = true; })
-        .value("--system", [this](const std::string& v) { systems = cli::parse_choice_list("--system", v, tools::free_systems()); })
+        .value("--system", [this](const std::string& v) {
+          // "all": the built-in systems (every scheme); "zoo": the zoo systems (restricted set).
+          if (v == "all") systems = tools::builtin_systems();
+          else if (v == "zoo") systems = tools::zoo_systems();
+          else systems = cli::parse_choice_list("--system", v, tools::free_systems());
+        })
         .value("--scheme", [this](const std::string& v) { schemes = cli::parse_choice_list("--scheme", v, tools::scheme_list()); })
         .value("--nodes", [this](const std::string& v) { nodes = cli::parse_node_family_list("--nodes", v); })
         .value("--m", [this](const std::string& v) { std::tie(m_low, m_high) = cli::parse_integer_range<int>("--m", v, 2, 8); })
@@ -43,6 +48,18 @@ struct selection {
           digits = std::stoi(cli::parse_choice("--digits", v, allowed_digits));
         })
         .value("--threads", [this](const std::string& v) { threads = cli::parse_integer<unsigned>("--threads", v, 1, 64); });
+  }
+
+  /// Throws cli::usage_error (exit status 2) for a case whose system has no stepper for its
+  /// scheme in `digits` digits: a zoo system outside its restricted scheme set, or in 100 digits.
+  void check_cases() const {
+    for (const study_case& c : cases()) {
+      try {
+        tools::with_digits(digits, [&]<int D>() { tools::check_scheme<tools::scalar_for_digits<D>>(c.system, c.spec); });
+      } catch (const std::invalid_argument& e) {
+        throw cli::usage_error(e.what());
+      }
+    }
   }
 
   /// Every (system, scheme, family, m) of the selection; midpoint and trapezoidal have no m

@@ -59,6 +59,14 @@ struct henon_heiles : natural<henon_heiles, 2> {
   static T energy(const vec<T, 2>& q, const vec<T, 2>& qdot) {
     return T((qdot[0] * qdot[0] + qdot[1] * qdot[1]) / T(2) + potential<T>(q));
   }
+  /// The tools' initial state (a stated choice): q0 = (0, 0), qdot0 = (3/10, 2/5), energy
+  /// exactly 1/8, the energy of Henon & Heiles' surface of section where regular and chaotic
+  /// orbits coexist.
+  template <class T>
+  static void initial_data(vec<T, 2>& q, vec<T, 2>& qdot) {
+    q << T(0), T(0);
+    qdot << T(3) / T(10), T(2) / T(5);
+  }
 };
 
 /// Elastic (spring) pendulum in polar coordinates q = (r, phi), phi from the downward vertical;
@@ -82,6 +90,13 @@ struct spring_pendulum {
     const T& r = q[0];
     return T((qdot[0] * qdot[0] + r * r * qdot[1] * qdot[1]) / T(2) + (r - T(1)) * (r - T(1)) / T(2) - r * cos(q[1]));
   }
+  /// The tools' initial state (a stated choice, the state of the guide's symplecticity table):
+  /// released from rest at r = 11/10, phi = 1/2.
+  template <class T>
+  static void initial_data(vec<T, 2>& q, vec<T, 2>& qdot) {
+    q << T(11) / T(10), T(1) / T(2);
+    qdot << T(0), T(0);
+  }
 };
 
 /// Planar double pendulum in the angles (theta1, theta2) from the downward vertical; unit
@@ -103,6 +118,12 @@ struct double_pendulum {
     using std::cos;
     return T(v[0] * v[0] + v[1] * v[1] / T(2) + cos(T(q[0] - q[1])) * v[0] * v[1] - T(2) * cos(q[0]) - cos(q[1]));
   }
+  /// The tools' initial state (a stated choice): released from rest at theta = (1/2, 1).
+  template <class T>
+  static void initial_data(vec<T, 2>& q, vec<T, 2>& v) {
+    q << T(1) / T(2), T(1);
+    v << T(0), T(0);
+  }
 };
 
 /// Periodic Toda lattice of three particles: L = 1/2 |qdot|^2 - sum_i exp(q_i - q_{i+1}),
@@ -122,6 +143,13 @@ struct toda3 : natural<toda3, 3> {
   template <class T>
   static T energy(const vec<T, 3>& q, const vec<T, 3>& p) {
     return T((p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / T(2) + potential<T>(q));
+  }
+  /// The tools' initial state (a stated choice): q0 = (1, 0, -1), qdot0 = (1/2, 0, -1/2), zero
+  /// total momentum (no drift of the centre of mass).
+  template <class T>
+  static void initial_data(vec<T, 3>& q, vec<T, 3>& qdot) {
+    q << T(1), T(0), T(-1);
+    qdot << T(1) / T(2), T(0), T(-1) / T(2);
   }
   template <class T>
   static T total_momentum(const vec<T, 3>& p) { return T(p[0] + p[1] + p[2]); }
