@@ -76,7 +76,7 @@ geomint_cli_corpus(geomint-order "--t-end expects a finite number > 0" --t-end n
 geomint_cli_corpus(geomint-order "--m is out of range" --m 2..9)
 geomint_cli_corpus(geomint-order "--m range '5..3' is empty" --m 5..3)
 geomint_cli_corpus(geomint-order "--threads is out of range" --threads 0)
-geomint_cli_corpus(geomint-order "--digits must be one of 50, 100" --digits 16)
+geomint_cli_corpus(geomint-order "--digits must be one of 16, 50, 100" --digits 15)
 geomint_cli_corpus(geomint-order "--scheme must be one of" --scheme rk4)
 geomint_cli_corpus(geomint-order "--system must be one of" --system all,moon)
 
