@@ -280,12 +280,12 @@ int main(int argc, char** argv) {
       in >> t;
       return t;
     };
-    sel.check_cases();
     for (const std::string& system : sel.systems)
       if (tools::is_zoo_name(system) != (sel.digits == 16))
         throw cli::usage_error("--system " + system + ": geomint-order studies the " +
                                (sel.digits == 16 ? std::string("built-in systems in 50 or 100 digits")
                                                  : std::string("zoo systems in 16 digits (--digits 16)")));
+    sel.check_cases();
     int status = 0;
     if (sel.digits == 16) {
       status = run<double, cpp_bin_float_50>(sel, parse_time(double()), counts, monitor);
