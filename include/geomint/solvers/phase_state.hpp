@@ -20,8 +20,9 @@ struct phase_carry {
 /// x + (carry + dx) rounded to the nearest scalar, and in carry what that rounding lost, exactly
 /// (Knuth's TwoSum: six additions, exact for any magnitudes, so also when p crosses zero and
 /// |dp| > |p|). Each component's x + carry is then the exact sum of the increments to within
-/// one rounding of the increment, instead of k roundings of x after k steps: the round-off of
-/// a long run grows like a random walk (Brouwer's law, sqrt(k)) instead of like k.
+/// one rounding of each increment (eps |dx|), instead of one rounding of x (eps |x|) per step.
+/// This removes the round-off of the summation only: the rounding inside the increments (the
+/// scheme's coefficients, the solve) remains (docs/results/long_runs.md, "Brouwer's law").
 template <class T, int n>
 void add_compensated(vec<T, n>& x, vec<T, n>& carry, const vec<T, n>& dx) {
   for (int i = 0; i < n; ++i) {
