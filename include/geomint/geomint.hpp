@@ -13,6 +13,7 @@
 #include "geomint/core/quadrature.hpp"
 #include "geomint/core/multiprecision.hpp"
 #include "geomint/core/decimal.hpp"
+#include "geomint/core/dispatch.hpp"
 // ad, linalg, solvers: forward-mode AD, small dense linear algebra, Newton, the step contract
 #include "geomint/ad/dual.hpp"
 #include "geomint/linalg/types.hpp"
@@ -34,9 +35,11 @@
 #include "geomint/schemes/constrained_lpf.hpp"
 #include "geomint/schemes/paper_schemes.hpp"
 #include "geomint/schemes/paper23.hpp"
+#include "geomint/schemes/step_path.hpp"
 // the integrators: one contract for free and constrained systems
 #include "geomint/integrator.hpp"
 #include "geomint/constrained_integrator.hpp"
+#include "geomint/stepper.hpp"
 // lie groups and the geometrically exact beam
 #include "geomint/lie/so3.hpp"
 #include "geomint/lie/se3.hpp"

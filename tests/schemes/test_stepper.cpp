@@ -46,7 +46,7 @@ TEST_CASE("stepper: a scheme chosen by name steps exactly like the typed integra
 }
 
 TEST_CASE("stepper: unknown names and m out of range are errors; a failed step leaves the output alone", "[stepper]") {
-  using S = systems::pendulum;
+  using S = systems::kepler;  // one factory per test source: the one of the test above
   CHECK_THROWS_AS((make_stepper<S, double>({"rk4", "equispaced", "lagrange", 2})), std::invalid_argument);
   CHECK_THROWS_AS((make_stepper<S, double>({"lpf", "gauss", "lagrange", 2})), std::invalid_argument);
   CHECK_THROWS_AS((make_stepper<S, double>({"lpf", "equispaced", "hermite", 2})), std::invalid_argument);
@@ -54,17 +54,17 @@ TEST_CASE("stepper: unknown names and m out of range are errors; a failed step l
   CHECK_THROWS_AS((make_stepper<S, double>({"galerkin", "equispaced", "lagrange", 9})), std::invalid_argument);
 
   const auto stepper = make_stepper<S, double>({"lpf", "equispaced", "lagrange", 3});
-  const dynamic_vector<double> q = dynamic_vector<double>::Constant(1, 1.0), p = dynamic_vector<double>::Zero(1);
-  dynamic_vector<double> q1 = dynamic_vector<double>::Constant(1, 7.0), p1 = q1;
+  const dynamic_vector<double> q = dynamic_vector<double>::Constant(2, 1.0), p = dynamic_vector<double>::Zero(2);
+  dynamic_vector<double> q1 = dynamic_vector<double>::Constant(2, 7.0), p1 = q1;
   for (const double tau : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
     const step_status st = stepper->try_step(q, p, tau, q1, p1);
     CHECK(st.reason == step_failure::invalid_step_size);
     CHECK(q1[0] == 7.0);
     CHECK(p1[0] == 7.0);
   }
-  const dynamic_vector<double> bad = dynamic_vector<double>::Constant(1, std::numeric_limits<double>::infinity());
+  const dynamic_vector<double> bad = dynamic_vector<double>::Constant(2, std::numeric_limits<double>::infinity());
   CHECK(stepper->try_step(bad, p, 0.1, q1, p1).reason == step_failure::non_finite_input);
   CHECK(q1[0] == 7.0);
-  const dynamic_vector<double> wrong_size = dynamic_vector<double>::Zero(2);
+  const dynamic_vector<double> wrong_size = dynamic_vector<double>::Zero(3);
   CHECK_THROWS_AS(stepper->try_step(wrong_size, wrong_size, 0.1, q1, p1), std::invalid_argument);
 }
