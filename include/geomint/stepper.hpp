@@ -67,6 +67,12 @@ class any_stepper {
   /// dimension is a programming error (std::invalid_argument).
   virtual step_status try_step(const vector& q, const vector& p, const T& tau, vector& q1, vector& p1,
                                const newton_options<T>& opt = {}) const = 0;
+  /// The same step with compensated summation of the end update (integrator::
+  /// set_compensated_summation): q_carry and p_carry are the compensation terms of (q, p) on
+  /// entry (zero to start) and of (q1, p1) on success; on failure all are untouched.
+  virtual step_status try_step_compensated(const vector& q, const vector& p, vector& q_carry, vector& p_carry,
+                                           const T& tau, vector& q1, vector& p1,
+                                           const newton_options<T>& opt = {}) const = 0;
   /// The energy at (q, p) (NaN where the Legendre transform cannot be inverted).
   virtual T energy(const vector& q, const vector& p) const = 0;
   /// p = dL/dqdot(q, qdot).
@@ -101,6 +107,28 @@ class scheme_stepper final : public any_stepper<T> {
     if (done) {
       q1 = s.q;
       p1 = s.p;
+    }
+    return done;
+  }
+  step_status try_step_compensated(const vector& q, const vector& p, vector& q_carry, vector& p_carry, const T& tau,
+                                   vector& q1, vector& p1, const newton_options<T>& opt) const override {
+    phase_state<T, n> s;
+    s.q = fixed(q);
+    s.p = fixed(p);
+    const step_status st = check_step_input(s.step, tau, s.q, s.p);
+    if (!st) return st;
+    phase_carry<T, n> carry1;
+    carry1.q = fixed(q_carry);
+    carry1.p = fixed(p_carry);
+    V q1f = V::Zero(), p1f = V::Zero();
+    const step_status done =
+        finish_step(s, engine_.one_step(s.q, s.p, tau, q1f, p1f, opt, nullptr, &carry1), q1f, p1f, tau, this->monitor_,
+                    [this](const V& a, const V& b) { return energy_of(a, b); }, &carry1);
+    if (done) {
+      q1 = s.q;
+      p1 = s.p;
+      q_carry = s.carry.q;
+      p_carry = s.carry.p;
     }
     return done;
   }

@@ -4,6 +4,7 @@
 #include "catch.hpp"
 #include "geomint/integrator.hpp"
 #include "geomint/mechanics/systems.hpp"
+#include "geomint/stepper.hpp"
 #include "scalar_types.hpp"
 
 using namespace geomint;
@@ -113,4 +114,136 @@ TEMPLATE_LIST_TEST_CASE("charged particle in B_z = 1 + r^2: conserved quantities
   run(lpf<2, equispaced>{}, dJ, dE, f, l);
   CHECK(dE <= bound);  // m = 2: the midpoint node is the Gauss point
   CHECK(dJ <= tau * tau);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Compensated summation of the end update (integrator::set_compensated_summation,
+// solvers/phase_state.hpp add_compensated).
+
+TEMPLATE_LIST_TEST_CASE("add_compensated is exact where plain summation loses every increment", "[compensated]",
+                        geomint::test::integrator_scalar_types) {
+  // Expected values by exact arithmetic in cpp_bin_float_100 (332 bits: the sums below need at
+  // most the scalar's bits plus 20, so they are exact there).
+  using T = TestType;
+  using R = geomint::test::cpp_bin_float_100;
+  const T eps = std::numeric_limits<T>::epsilon();
+  const long count = 100000;
+  // 1) 10^5 increments d = eps/3 onto x = 1: each rounds away in plain summation (1 + d = 1).
+  {
+    const T d = eps / T(3);
+    vec<T, 1> x(T(1)), carry(T(0)), plain(T(1));
+    for (long k = 0; k < count; ++k) {
+      add_compensated(x, carry, vec<T, 1>(d));
+      plain[0] += d;
+    }
+    const R exact = R(1) + R(count) * R(d);
+    const R plain_error = abs(R(plain[0]) - exact);
+    const R comp_error = abs(R(x[0]) + R(carry[0]) - exact);
+    INFO("plain error " << static_cast<double>(plain_error) << ", compensated " << static_cast<double>(comp_error));
+    CHECK(plain_error == R(count) * R(d));  // plain summation lost all of them
+    // Each step rounds only y = d + carry (error <= eps |y| / 2, |y| <= 2 d): in all < count eps d.
+    CHECK(comp_error <= R(count) * R(eps) * R(d));
+    // and x itself is the exact sum rounded to the scalar (to one unit in the last place).
+    CHECK(abs(R(x[0]) - exact) <= R(eps));
+  }
+  // 2) Increments larger than the value itself (a momentum crossing zero), where Kahan's
+  //    fast two-sum would not be exact: each addition makes the new x + carry equal to the old
+  //    x plus y exactly (y = dx + carry rounded, the only rounding of a step), so the sum
+  //    is off the exact one by at most sum_k eps |y_k| / 2.
+  {
+    vec<T, 1> x(eps / T(3)), carry(T(0));
+    R exact = R(x[0]), bound(0);
+    bool every_step_exact = true;
+    for (long k = 0; k < 1000; ++k) {
+      const T d = (k % 2 == 0 ? T(1) : T(-1)) * (T(1) + T(k) / T(7));
+      const T y = d + carry[0];
+      const R x_before = R(x[0]);
+      add_compensated(x, carry, vec<T, 1>(d));
+      every_step_exact = every_step_exact && R(x[0]) + R(carry[0]) == x_before + R(y);
+      exact += R(d);
+      bound += R(eps) * abs(R(y)) / R(2);
+    }
+    CHECK(every_step_exact);
+    const R error = abs(R(x[0]) + R(carry[0]) - exact);
+    INFO("compensated error " << static_cast<double>(error) << ", bound " << static_cast<double>(bound));
+    CHECK(error <= bound);
+  }
+}
+
+TEMPLATE_LIST_TEST_CASE("compensated and plain steps agree to rounding", "[compensated]",
+                        geomint::test::integrator_scalar_types) {
+  // The two runs solve the same equations and differ only in how the increments are added, so
+  // after k steps they agree to about k eps |q| (the plain run's round-off; the pendulum's flow
+  // from theta = 1 does not amplify it by more than a small factor over these times). Whether
+  // compensation pays is a long-run statistic, measured by geomint-run --growth
+  // (docs/results/long_runs.md), not a property of one short run.
+  using T = TestType;
+  using std::abs;
+  const long steps = std::numeric_limits<T>::digits10 > 20 ? 100 : 2000;
+  auto check_scheme = [&](auto scheme_tag) {
+    using Scheme = decltype(scheme_tag);
+    const T tau = T(1) / T(10);
+    integrator<Scheme, systems::pendulum, T> plain(systems::pendulum{}, tau), comp(systems::pendulum{}, tau);
+    comp.set_compensated_summation(true);
+    CHECK(comp.compensated_summation());
+    CHECK_FALSE(plain.compensated_summation());
+    auto a = plain.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
+    auto b = comp.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
+    plain.advance(a, steps);
+    comp.advance(b, steps);
+    INFO(Scheme::name() << ": q " << a.q[0] << " vs " << b.q[0] << ", p " << a.p[0] << " vs " << b.p[0]);
+    CHECK(abs(a.q[0] - b.q[0]) <= eps_tol<T>(static_cast<int>(4 * steps)));
+    CHECK(abs(a.p[0] - b.p[0]) <= eps_tol<T>(static_cast<int>(4 * steps)));
+    CHECK(b.step == steps);
+    CHECK(b.t == a.t);
+    CHECK((a.q[0] != b.q[0] || a.p[0] != b.p[0]));  // the compensation did change the rounding
+  };
+  check_scheme(lpf<4, gauss_interior>{});
+  check_scheme(galerkin_vi<3>{});
+  check_scheme(midpoint_vi{});
+}
+
+TEMPLATE_LIST_TEST_CASE("a failed compensated step leaves the state and its compensation terms unchanged",
+                        "[compensated]", geomint::test::integrator_scalar_types) {
+  // The step is solved and its new compensation terms computed, then the step monitor rejects
+  // it (energy change above a bound set far below the scheme's error at tau = 1).
+  using T = TestType;
+  integrator<lpf<2, gauss_interior>, systems::pendulum, T> I(systems::pendulum{}, T(1) / T(10));
+  I.set_compensated_summation(true);
+  auto s = I.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
+  I.advance(s, 25);
+  REQUIRE(((s.carry.q.array() != T(0)).any() || (s.carry.p.array() != T(0)).any()));  // something to keep
+  const auto before = s;
+  step_monitor<T> m = step_monitor<T>::on();
+  m.max_relative_energy_change = std::numeric_limits<T>::epsilon();
+  I.set_monitor(m);
+  I.set_tau(T(1));
+  const step_status st = I.try_step(s);
+  CHECK_FALSE(st);
+  CHECK(st.reason == step_failure::left_regime);
+  CHECK(s.q == before.q);
+  CHECK(s.p == before.p);
+  CHECK(s.carry.q == before.carry.q);
+  CHECK(s.carry.p == before.carry.p);
+  CHECK(s.step == before.step);
+  CHECK(s.t == before.t);
+  // The same through the type-erased stepper: on failure its carries are untouched too.
+  const std::unique_ptr<any_stepper<T>> stepper =
+      std::make_unique<scheme_stepper<lpf<2, gauss_interior>, systems::pendulum, T>>();
+  stepper->set_monitor(m);
+  dynamic_vector<T> q = before.q, p = before.p, cq = before.carry.q, cp = before.carry.p, q1 = q, p1 = p;
+  CHECK_FALSE(stepper->try_step_compensated(q, p, cq, cp, T(1), q1, p1));
+  CHECK(cq == dynamic_vector<T>(before.carry.q));
+  CHECK(cp == dynamic_vector<T>(before.carry.p));
+  // and on success it takes the integrator's step, bit for bit.
+  integrator<lpf<2, gauss_interior>, systems::pendulum, T> J(systems::pendulum{}, T(1) / T(10));
+  J.set_compensated_summation(true);
+  auto r = before;
+  REQUIRE(J.try_step(r));
+  stepper->set_monitor(step_monitor<T>{});
+  REQUIRE(stepper->try_step_compensated(q, p, cq, cp, T(1) / T(10), q1, p1));
+  CHECK(q1 == dynamic_vector<T>(r.q));
+  CHECK(p1 == dynamic_vector<T>(r.p));
+  CHECK(cq == dynamic_vector<T>(r.carry.q));
+  CHECK(cp == dynamic_vector<T>(r.carry.p));
 }

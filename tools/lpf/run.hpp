@@ -19,6 +19,8 @@ struct options {
   int digits = 16;
   bool csv = false;
   bool monitor = true;  ///< the step monitor (geomint/solvers/step_monitor.hpp); --no-monitor turns it off
+  bool compensated = false;  ///< --compensated: compensated summation of the q, p update
+  bool growth = false;       ///< --growth: fit the exponent of the energy error's growth in t
 };
 
 /// The free systems (the built-in harmonic, pendulum, kepler, charged and the zoo systems of

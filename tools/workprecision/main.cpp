@@ -21,6 +21,7 @@ namespace {
 const char* usage =
     "usage: geomint-workprecision [--system pendulum|kepler] [--digits 16|50] [--csv]\n"
     "                             [--t-end T (> 0)] [--max-seconds S (> 0)] [--methods a,b,...]\n"
+    "                             [--plain-summation]\n"
     "Work-precision of geomint's variational integrators (LPF on Gauss interior nodes and\n"
     "Galerkin up to m = 16, and more) against peers: Boost.Odeint's symplectic_rkn_sb3a_mclachlan,\n"
     "symplectic_rkn_sb3a_m4_mclachlan, velocity_verlet, controlled runge_kutta_fehlberg78 and\n"
@@ -38,7 +39,9 @@ const char* usage =
     "interpolates (log-log) each method's CPU time at the regime's target errors and compares the\n"
     "best geomint scheme with the best peer (goals: double 1/2 at 1e-10 and 1/3 at 1e-12;\n"
     "50 digits 1/10 at 1e-30).\n"
-    "--methods restricts the run to a comma-separated list of method names (see the table).\n";
+    "--methods restricts the run to a comma-separated list of method names (see the table).\n"
+    "geomint's schemes add the increments of q and p with compensated summation (Brouwer's law\n"
+    "for the round-off); --plain-summation turns it off.\n";
 
 }  // namespace
 
@@ -46,6 +49,7 @@ int main(int argc, char** argv) {
   geomint::workprecision::settings o;
   geomint::cli::parser cl("geomint-workprecision", usage);
   cl.toggle("--csv", [&] { o.csv = true; })
+      .toggle("--plain-summation", [&] { o.compensated = false; })
       .value("--system", [&](const std::string& v) { o.system = geomint::cli::parse_choice("--system", v, {"pendulum", "kepler"}); })
       .value("--digits",
              [&](const std::string& v) { o.digits = geomint::cli::parse_choice("--digits", v, {"16", "50"}) == "16" ? 16 : 50; })

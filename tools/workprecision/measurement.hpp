@@ -37,6 +37,7 @@ struct settings {
   std::optional<double> t_end;
   std::optional<double> max_seconds;
   std::vector<std::string> only;
+  bool compensated = true;  ///< geomint's schemes with compensated summation (--plain-summation: off)
 };
 
 struct result {

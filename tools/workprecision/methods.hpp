@@ -52,13 +52,16 @@ T tolerance_of(long knob) {
   return T(pow(T(10), T(-knob) / T(2)));
 }
 
+/// A geomint scheme; `compensated`: compensated summation of the q, p update
+/// (integrator::set_compensated_summation).
 template <class P, class Scheme, class T>
-method<T, P::n> geomint_method(std::string name, long first_steps) {
+method<T, P::n> geomint_method(std::string name, long first_steps, bool compensated) {
   constexpr int n = P::n;
   method<T, n> m{std::move(name), false, knob_kind::steps, first_steps, {}};
-  m.run = [](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& p, const monitor_fn<T, n>* mon) -> long {
+  m.run = [compensated](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& p, const monitor_fn<T, n>* mon) -> long {
     using I = integrator<Scheme, typename P::sys, T>;
-    const I integ(typename P::sys{}, T(t_end / T(steps)));
+    I integ(typename P::sys{}, T(t_end / T(steps)));
+    integ.set_compensated_summation(compensated);
     typename I::state s;
     for (int i = 0; i < n; ++i) {
       s.q[i] = q[std::size_t(i)];

@@ -25,20 +25,20 @@ namespace {
 /// The methods and first knobs (chosen so that the first error is near 1e-4 in double over
 /// T = 1000 and near 1e-12 in 50 digits over T = 100).
 template <class P, class T>
-std::vector<method<T, P::n>> methods_16() {
+std::vector<method<T, P::n>> methods_16(bool compensated) {
   using namespace geomint;
   std::vector<method<T, P::n>> all;
-  all.push_back(geomint_method<P, trapezoidal_vi, T>("trapezoidal", 20000));
-  all.push_back(geomint_method<P, midpoint_vi, T>("midpoint", 20000));
-  all.push_back(geomint_method<P, galerkin_vi<4>, T>("galerkin-m4", 500));
-  all.push_back(geomint_method<P, galerkin_vi<8>, T>("galerkin-m8", 300));
-  all.push_back(geomint_method<P, galerkin_vi<16>, T>("galerkin-m16", 250));
-  all.push_back(geomint_method<P, lpf<4, gauss_interior>, T>("lpf-m4-gauss-interior", 2000));
-  all.push_back(geomint_method<P, lpf<6, gauss_interior>, T>("lpf-m6-gauss-interior", 500));
-  all.push_back(geomint_method<P, lpf<8, gauss_interior>, T>("lpf-m8-gauss-interior", 500));
-  all.push_back(geomint_method<P, lpf<10, gauss_interior>, T>("lpf-m10-gauss-interior", 300));
-  all.push_back(geomint_method<P, lpf<12, gauss_interior>, T>("lpf-m12-gauss-interior", 300));
-  all.push_back(geomint_method<P, lpf<16, gauss_interior>, T>("lpf-m16-gauss-interior", 250));
+  all.push_back(geomint_method<P, trapezoidal_vi, T>("trapezoidal", 20000, compensated));
+  all.push_back(geomint_method<P, midpoint_vi, T>("midpoint", 20000, compensated));
+  all.push_back(geomint_method<P, galerkin_vi<4>, T>("galerkin-m4", 500, compensated));
+  all.push_back(geomint_method<P, galerkin_vi<8>, T>("galerkin-m8", 300, compensated));
+  all.push_back(geomint_method<P, galerkin_vi<16>, T>("galerkin-m16", 250, compensated));
+  all.push_back(geomint_method<P, lpf<4, gauss_interior>, T>("lpf-m4-gauss-interior", 2000, compensated));
+  all.push_back(geomint_method<P, lpf<6, gauss_interior>, T>("lpf-m6-gauss-interior", 500, compensated));
+  all.push_back(geomint_method<P, lpf<8, gauss_interior>, T>("lpf-m8-gauss-interior", 500, compensated));
+  all.push_back(geomint_method<P, lpf<10, gauss_interior>, T>("lpf-m10-gauss-interior", 300, compensated));
+  all.push_back(geomint_method<P, lpf<12, gauss_interior>, T>("lpf-m12-gauss-interior", 300, compensated));
+  all.push_back(geomint_method<P, lpf<16, gauss_interior>, T>("lpf-m16-gauss-interior", 250, compensated));
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
       "odeint-symplectic_rkn_sb3a_mclachlan", 4000));
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
@@ -55,17 +55,17 @@ std::vector<method<T, P::n>> methods_16() {
 }
 
 template <class P, class T>
-std::vector<method<T, P::n>> methods_50() {
+std::vector<method<T, P::n>> methods_50(bool compensated) {
   using namespace geomint;
   std::vector<method<T, P::n>> all;
-  all.push_back(geomint_method<P, galerkin_vi<8>, T>("galerkin-m8", 200));
-  all.push_back(geomint_method<P, galerkin_vi<12>, T>("galerkin-m12", 100));
-  all.push_back(geomint_method<P, galerkin_vi<16>, T>("galerkin-m16", 100));
-  all.push_back(geomint_method<P, lpf<6, gauss_interior>, T>("lpf-m6-gauss-interior", 400));
-  all.push_back(geomint_method<P, lpf<8, gauss_interior>, T>("lpf-m8-gauss-interior", 200));
-  all.push_back(geomint_method<P, lpf<10, gauss_interior>, T>("lpf-m10-gauss-interior", 100));
-  all.push_back(geomint_method<P, lpf<12, gauss_interior>, T>("lpf-m12-gauss-interior", 100));
-  all.push_back(geomint_method<P, lpf<16, gauss_interior>, T>("lpf-m16-gauss-interior", 100));
+  all.push_back(geomint_method<P, galerkin_vi<8>, T>("galerkin-m8", 200, compensated));
+  all.push_back(geomint_method<P, galerkin_vi<12>, T>("galerkin-m12", 100, compensated));
+  all.push_back(geomint_method<P, galerkin_vi<16>, T>("galerkin-m16", 100, compensated));
+  all.push_back(geomint_method<P, lpf<6, gauss_interior>, T>("lpf-m6-gauss-interior", 400, compensated));
+  all.push_back(geomint_method<P, lpf<8, gauss_interior>, T>("lpf-m8-gauss-interior", 200, compensated));
+  all.push_back(geomint_method<P, lpf<10, gauss_interior>, T>("lpf-m10-gauss-interior", 100, compensated));
+  all.push_back(geomint_method<P, lpf<12, gauss_interior>, T>("lpf-m12-gauss-interior", 100, compensated));
+  all.push_back(geomint_method<P, lpf<16, gauss_interior>, T>("lpf-m16-gauss-interior", 100, compensated));
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
       "odeint-symplectic_rkn_sb3a_m4_mclachlan", 10000));
   all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 24));
@@ -89,10 +89,10 @@ int run_regime(const settings& o) {
   return 2;
 #else
   if constexpr (Digits == 16) {
-    return run_sweeps<P, double, boost::multiprecision::cpp_bin_float_50>(o, regime_16(), methods_16<P, double>());
+    return run_sweeps<P, double, boost::multiprecision::cpp_bin_float_50>(o, regime_16(), methods_16<P, double>(o.compensated));
   } else {
     using mp = boost::multiprecision::cpp_bin_float_50;
-    return run_sweeps<P, mp, boost::multiprecision::cpp_bin_float_100>(o, regime_50(), methods_50<P, mp>());
+    return run_sweeps<P, mp, boost::multiprecision::cpp_bin_float_100>(o, regime_50(), methods_50<P, mp>(o.compensated));
   }
 #endif
 }

@@ -81,16 +81,16 @@ class galerkin_method {
   /// q_{k+1} = X_M; p_{k+1} = G_M = sum_j G_j - G_0 - (G_1 + ... + G_{M-1}) = p_k + tau sum_k
   /// w_k L_q(x_k, v_k) at the solution (the basis sums to 1, its derivatives to 0): the same
   /// value as G_M, but the Newton and round-off errors of Y do not pass through B1 / tau (an
-  /// RKN-like update).
-  step_status finish(const V& q, const V& p, const T& tau, const Z& z, V& q1, V& p1) const {
+  /// RKN-like update). Both as increments (u.q = X_M - q_k, u.p = p_{k+1} - p_k).
+  step_status finish(const V& q, const V&, const T& tau, const Z& z, end_update<T, n>& u) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
-    q1 = q + Y.col(M);
+    u.q = Y.col(M);
     V sum = V::Zero();
     for (int k = 0; k < Q; ++k) {
       const V x = q + combine(Y, B0_, k), v = combine(Y, B1_, k) / tau;
       sum += w_[k] * D::gradient(sys_, x, v).Lq;
     }
-    p1 = p + tau * sum;
+    u.p = tau * sum;
     return {};
   }
 

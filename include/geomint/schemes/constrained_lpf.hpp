@@ -73,12 +73,15 @@ class constrained_lpf_method {
   }
 
   /// q_{k+1} = X_m; p_{k+1} = dL/dqdot(t_{k+1}) projected onto the hidden constraint.
-  step_status finish(const V& q, const V&, const T& tau, const Z& z, V& q1, V& p1) const {
+  /// q as an increment, the projected momentum as a value (end_update).
+  step_status finish(const V& q, const V&, const T& tau, const Z& z, end_update<T, n>& u) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
-    q1 = q + w_.template value<n>(Y, M);
+    u.q = w_.template value<n>(Y, M);
+    const V q1 = q + u.q;
     const V p_end = D::gradient(sys_, q1, V(combine(Y, w_.D1, M) / tau)).Lv;
     step_status st;
-    if (!project_momentum(q1, p_end, p1)) st.reason = step_failure::singular_jacobian;
+    u.p_is_increment = false;
+    if (!project_momentum(q1, p_end, u.p)) st.reason = step_failure::singular_jacobian;
     return st;
   }
 

@@ -114,7 +114,8 @@ class lpf_method {
   /// tau^2 M^{-1} sum_i beta_i L_q(x_i). The same map as differentiating the path at t_{k+1},
   /// but the Newton and round-off errors of the increments enter only through tau^2 L_qq, not
   /// through D1 / tau (as in an RKN update). Other systems: p_{k+1} = dL/dxdot(t_{k+1}) (eq. 10).
-  step_status finish(const V& q, const V& p, const T& tau, const Z& z, V& q1, V& p1) const {
+  /// Produced as increments (u.q = q_{k+1} - q_k, u.p = p_{k+1} - p_k) except that last p_{k+1}.
+  step_status finish(const V& q, const V& p, const T& tau, const Z& z, end_update<T, n>& u) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
     if constexpr (natural_system<Sys>) {
       V sb = V::Zero(), sbeta = V::Zero();
@@ -124,17 +125,18 @@ class lpf_method {
         sb += quad_b_[static_cast<std::size_t>(i - 1)] * f;
         sbeta += quad_beta_[static_cast<std::size_t>(i - 1)] * f;
       }
-      p1 = p + tau * sb;
+      u.p = tau * sb;
       V dq;  // tau M^{-1} (p + tau sbeta), written out (for n = 1 Eigen's product is a mixed-type inner product)
       for (int r = 0; r < n; ++r) {
         T sum(0);
         for (int c = 0; c < n; ++c) sum += minv_(r, c) * (p[c] + tau * sbeta[c]);
         dq[r] = tau * sum;
       }
-      q1 = q + dq;
+      u.q = dq;
     } else {
-      q1 = q + w_.template value<n>(Y, M);
-      p1 = D::momentum_of(sys_, q1, V(combine(Y, w_.D1, M) / tau));
+      u.q = w_.template value<n>(Y, M);
+      u.p = D::momentum_of(sys_, V(q + u.q), V(combine(Y, w_.D1, M) / tau));
+      u.p_is_increment = false;
     }
     return {};
   }

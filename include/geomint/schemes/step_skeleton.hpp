@@ -12,7 +12,9 @@
 ///   bool predict(q, p, tau, z)            fresh predictor; false if no velocity belongs to p
 ///   void extrapolate(previous_z, z)        predictor continuing the previous step
 ///   void residual(q, p, tau, z, F, J*)     F(z) and, if J is not null, dF/dz
-///   step_status finish(q, p, tau, z, q1, p1)  the end update at the solution z
+///   step_status finish(q, p, tau, z, u)    the end update at the solution z (an end_update:
+///                                          increments where it can, so that compensated
+///                                          summation can add them)
 ///
 /// and optionally `end_momentum(x0, x1, tau, p1, opt)` for the two-step form.
 
@@ -27,6 +29,7 @@
 #include "geomint/core/differentiation.hpp"
 #include "geomint/core/nodes.hpp"
 #include "geomint/solvers/newton.hpp"
+#include "geomint/solvers/phase_state.hpp"
 
 namespace geomint {
 namespace schemes::detail {
@@ -157,6 +160,33 @@ void extrapolate_path(const Eigen::Matrix<T, M + 1, M + 1>& E, const vec<T, N>& 
   for (int i = 1; i <= M; ++i) z.template segment<n>((i - 1) * n) = combine(Y, E, i);
 }
 
+/// What a method's end update produces: the increments q_{k+1} - q_k and p_{k+1} - p_k where
+/// the method forms the new point as an increment (then the skeleton adds them, plainly or with
+/// compensated summation), else the new values themselves (flag false; the compensation term
+/// of that part is reset to zero).
+template <class T, int n>
+struct end_update {
+  vec<T, n> q = vec<T, n>::Zero();
+  vec<T, n> p = vec<T, n>::Zero();
+  bool q_is_increment = true;
+  bool p_is_increment = true;
+};
+
+/// x_{k+1} from x_k and a method's part u of the end update: x_k + u plainly (carry null),
+/// with compensated summation (carry: the compensation term, updated), or u itself if it is a
+/// value, not an increment.
+template <class T, int n>
+vec<T, n> apply_end_update(const vec<T, n>& x, const vec<T, n>& u, bool is_increment, vec<T, n>* carry) {
+  if (!is_increment) {
+    if (carry) carry->setZero();
+    return u;
+  }
+  if (!carry) return x + u;
+  vec<T, n> out = x;
+  add_compensated(out, *carry, u);
+  return out;
+}
+
 /// Holds an atomic_flag for the lifetime of a scope if it was free.
 class try_lock_flag {
  public:
@@ -215,9 +245,11 @@ class step_skeleton {
   /// its result), the method's extrapolation of the previous solution, with the previous
   /// factorised Newton matrix reused while it contracts well; otherwise the method's fresh
   /// predictor and a fresh matrix. Either way the result solves the same equations to the
-  /// Newton tolerance. On failure q1, p1 are untouched.
+  /// Newton tolerance. `carry` (if not null) holds the compensation terms of (q, p) and selects
+  /// compensated summation of the end update (phase_state.hpp, add_compensated); it receives
+  /// those of (q1, p1). On failure q1, p1 and carry are untouched.
   step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt,
-                       unknowns* solution = nullptr) const {
+                       unknowns* solution = nullptr, phase_carry<T, n>* carry = nullptr) const {
     try_lock_flag lock(memory_.busy);
     step_memory<T, n, N>* mem = lock.owned() ? &memory_ : nullptr;
     unknowns z;
@@ -237,17 +269,20 @@ class step_skeleton {
       if (mem) mem->jacobian.valid = false;
       st = solve(q, p, tau, opt, z, mem ? &mem->jacobian : nullptr);
     }
-    V q_next = V::Zero(), p_next = V::Zero();
+    end_update<T, n> u;
     if (st) {
-      const step_status end = method_.finish(q, p, tau, z, q_next, p_next);
+      const step_status end = method_.finish(q, p, tau, z, u);
       if (!end) st.reason = end.reason;
     }
     if (!st) {
       if (mem) mem->valid = false;
       return st;
     }
-    q1 = q_next;
-    p1 = p_next;
+    phase_carry<T, n> carry_next;
+    if (carry) carry_next = *carry;
+    q1 = apply_end_update<T, n>(q, u.q, u.q_is_increment, carry ? &carry_next.q : nullptr);
+    p1 = apply_end_update<T, n>(p, u.p, u.p_is_increment, carry ? &carry_next.p : nullptr);
+    if (carry) *carry = carry_next;
     if (solution) *solution = z;
     if (mem) {
       mem->valid = true;

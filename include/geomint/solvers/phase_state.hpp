@@ -9,6 +9,32 @@
 
 namespace geomint {
 
+/// The rounding errors carried by compensated summation (Kahan 1965; Moller 1965): the parts of
+/// the exact sums q_0 + sum dq_k and p_0 + sum dp_k that the rounded q and p could not hold.
+template <class T, int n>
+struct phase_carry {
+  vec<T, n> q = vec<T, n>::Zero();
+  vec<T, n> p = vec<T, n>::Zero();
+};
+
+/// x + (carry + dx) rounded to the nearest scalar, and in carry what that rounding lost, exactly
+/// (Knuth's TwoSum: six additions, exact for any magnitudes, so also when p crosses zero and
+/// |dp| > |p|). Each component's x + carry is then the exact sum of the increments to within
+/// one rounding of each increment (eps |dx|), instead of one rounding of x (eps |x|) per step.
+/// This removes the round-off of the summation only: the rounding inside the increments (the
+/// scheme's coefficients, the solve) remains (docs/results/long_runs.md, "Brouwer's law").
+template <class T, int n>
+void add_compensated(vec<T, n>& x, vec<T, n>& carry, const vec<T, n>& dx) {
+  for (int i = 0; i < n; ++i) {
+    const T y = dx[i] + carry[i];
+    const T s = x[i] + y;
+    const T y_part = s - x[i];
+    const T x_part = s - y_part;
+    carry[i] = (x[i] - x_part) + (y - y_part);
+    x[i] = s;
+  }
+}
+
 /// A point of the one-step (position-momentum) form.
 ///
 /// Time is never accumulated: t_k = t0 + (k - k0) tau, where (k0, t0) is the step and time at
@@ -23,6 +49,10 @@ struct phase_state {
   long k0 = 0;    ///< the step at which tau0 was first used
   T t0 = T(0);    ///< t_{k0}
   T tau0 = T(0);  ///< the step size in use since k0 (0 before the first step)
+  /// The compensation terms of compensated summation (integrator::set_compensated_summation):
+  /// q + carry.q and p + carry.p are the state to about twice the working precision. Zero
+  /// unless compensated summation is on; reset it to zero when setting q or p by hand.
+  phase_carry<T, n> carry{};
 
   /// Commits a successful step: (q_{k+1}, p_{k+1}), k + 1 and t_{k+1} = t0 + (k + 1 - k0) tau.
   void commit(const vec<T, n>& q1, const vec<T, n>& p1, const T& tau) {
@@ -35,6 +65,11 @@ struct phase_state {
     p = p1;
     ++step;
     t = t0 + T(step - k0) * tau;
+  }
+  /// Commits a successful step with its new compensation terms.
+  void commit(const vec<T, n>& q1, const vec<T, n>& p1, const phase_carry<T, n>& carry1, const T& tau) {
+    commit(q1, p1, tau);
+    carry = carry1;
   }
 };
 
@@ -51,10 +86,11 @@ step_status check_step_input(long k, const T& tau, const A& a, const B& b) {
 }
 
 /// The checks after a scheme's step st from s to (q1, p1): a finite result and, when enabled,
-/// the monitor on energy(q, p); commits to s only if all pass.
+/// the monitor on energy(q, p); commits to s only if all pass. `carry1` (if not null) holds the
+/// compensation terms of the new state, committed with it (compensated summation).
 template <class T, int n, class Energy>
 step_status finish_step(phase_state<T, n>& s, step_status st, const vec<T, n>& q1, const vec<T, n>& p1, const T& tau,
-                        const step_monitor<T>& monitor, const Energy& energy) {
+                        const step_monitor<T>& monitor, const Energy& energy, const phase_carry<T, n>* carry1 = nullptr) {
   st.step = s.step;
   if (!st) return st;
   if (!all_finite(q1) || !all_finite(p1)) {
@@ -65,7 +101,10 @@ step_status finish_step(phase_state<T, n>& s, step_status st, const vec<T, n>& q
     monitor.check(energy(s.q, s.p), energy(q1, p1), st);
     if (!st) return st;
   }
-  s.commit(q1, p1, tau);
+  if (carry1)
+    s.commit(q1, p1, *carry1, tau);
+  else
+    s.commit(q1, p1, tau);
   return st;
 }
 
