@@ -189,10 +189,15 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
       const auto& ref = refs.at(c.system);
       auto [q0, qdot0] = tools::default_initial_data<T>(c.system);
       const analysis::dynamic_vector<T> q0d = q0, p0d = stepper->momentum(q0, qdot0);
+      std::string step_failure;
       analysis::step_function<T> step = [&](const analysis::dynamic_vector<T>& q, const analysis::dynamic_vector<T>& p,
                                             const T& tau, analysis::dynamic_vector<T>& q1, analysis::dynamic_vector<T>& p1) {
         dynamic_vector<T> a, b;
-        if (!stepper->try_step(q, p, tau, a, b)) return false;
+        const step_status st = stepper->try_step(q, p, tau, a, b);
+        if (!st) {
+          step_failure = st.message();  // the reason, for the report below
+          return false;
+        }
         q1 = a;
         p1 = b;
         return true;
@@ -208,6 +213,7 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
         p = qp.second;
       };
       results[i] = analysis::order_study<T>(step, reference, q0d, p0d, t_end, counts);
+      if (!results[i].ok && !step_failure.empty()) results[i].failure += " (" + step_failure + ")";
     } catch (const std::exception& e) {
       results[i].failure = e.what();
     }
