@@ -1,5 +1,6 @@
 #pragma once
 /// `--digits D` of the tools: the scalar type of D, and D as a template argument.
+#include <limits>
 #include <type_traits>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -16,6 +17,12 @@ struct digits_scalar {
 };
 template <int Digits>
 using scalar_for_digits = typename digits_scalar<Digits>::type;
+
+/// The `--digits` value of the scalar T: 16 for double, else its decimal digits (50, 100).
+template <class T>
+constexpr int digits_of() {
+  return std::is_same_v<T, double> ? 16 : std::numeric_limits<T>::digits10;
+}
 
 /// f.template operator()<D>() for the run-time digits D (16, 50, or else 100; the command-line
 /// parser has already checked it).

@@ -120,8 +120,8 @@ struct zoo_scheme_set {
     const std::string who = "--system " + std::string(Sys::name) + ": ";
     if (!compiled)
       throw std::invalid_argument(who + "the zoo systems are compiled in 16 and 50 digits only, not " +
-                                  std::to_string(std::numeric_limits<T>::digits10));
-    const std::string set = " (the zoo's schemes in " + std::to_string(std::numeric_limits<T>::digits10) +
+                                  std::to_string(digits_of<T>()));
+    const std::string set = " (the zoo's schemes in " + std::to_string(digits_of<T>()) +
                             " digits: " + describe() + ")";
     if (spec.scheme == "midpoint") return;
     if (spec.scheme == "lpf") {
@@ -158,6 +158,45 @@ std::unique_ptr<any_stepper<T>> make_zoo_stepper(const scheme_spec& spec) {
   return with_int<2, set::lpf_max_m>(spec.m, [&]<int M>() { return make.template operator()<lpf<M, gauss_interior, lagrange>>(); });
 }
 
+/// The degrees above the library factory's range (geomint::stepper_max_m), for the built-in
+/// systems: m = 9..16 for lpf on Gauss-interior nodes with the Lagrange basis and for galerkin,
+/// the high-order schemes of the work-precision study (lpf order 2(m - 1), galerkin order 2m),
+/// in 16 and 50 digits. One unit per (system, digits) compiles their 16 engines
+/// (stepper_tu.cpp, GEOMINT_STEPPER_HIGH_M).
+template <class T>
+struct high_m_scheme_set {
+  static constexpr int min_m = stepper_max_m + 1;
+  static constexpr int max_m = 16;
+  static constexpr bool compiled = std::numeric_limits<T>::digits10 <= 50;
+  static constexpr const char* describe =
+      "m = 9..16 is compiled for --scheme lpf --nodes gauss-interior --basis lagrange and --scheme galerkin, "
+      "on the built-in free systems, in 16 and 50 digits";
+  /// Whether `spec` asks for a degree above the library factory's range (midpoint and
+  /// trapezoidal have no degree).
+  static bool applies(const scheme_spec& spec) {
+    return spec.m > stepper_max_m && (spec.scheme == "lpf" || spec.scheme == "galerkin");
+  }
+  /// Throws std::invalid_argument with a clear message unless `spec` is in the set.
+  static void check(const scheme_spec& spec) {
+    const std::string m = "m = " + std::to_string(spec.m) + ": ";
+    if (spec.m > max_m) throw std::invalid_argument(m + "m must be at most " + std::to_string(max_m));
+    if (!compiled)
+      throw std::invalid_argument(m + "not compiled in " + std::to_string(digits_of<T>()) + " digits (" +
+                                  describe + ")");
+    if (spec.scheme == "galerkin") return;
+    if (spec.scheme == "lpf" && canonical_node_family(spec.nodes) == gauss_interior::name && spec.basis == "lagrange")
+      return;
+    throw std::invalid_argument(m + "not compiled for --scheme " + spec.scheme +
+                                (spec.scheme == "lpf" ? " --nodes " + spec.nodes + " --basis " + spec.basis : std::string()) +
+                                " (" + describe + ")");
+  }
+};
+
+/// The stepper of a built-in system for a spec in high_m_scheme_set (defined in stepper_tu.cpp
+/// for T = double and cpp_bin_float_50).
+template <class Sys, class T>
+std::unique_ptr<any_stepper<T>> make_high_m_stepper(const scheme_spec& spec);
+
 /// `geomint::make_stepper<Sys, T>` (built-in systems) or make_zoo_stepper (zoo systems), defined
 /// for T = double, cpp_bin_float_50 (and cpp_bin_float_100 for the built-in systems) in one
 /// translation unit per (Sys, T) (stepper_tu.cpp).
@@ -165,12 +204,16 @@ template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec);
 
 /// Throws std::invalid_argument if the free system called `system` has no stepper for `spec` in
-/// the scalar T: an unknown system, or a zoo system outside its restricted scheme set. (The
-/// built-in systems' specs are checked by the library's factory.)
+/// the scalar T: an unknown system, a zoo system outside its restricted scheme set, or a degree
+/// above 8 outside high_m_scheme_set. (The built-in systems' other specs are checked by the
+/// library's factory.)
 template <class T>
 void check_scheme(std::string_view system, const scheme_spec& spec) {
   with_free_system(system, [&]<class Sys>() {
-    if constexpr (is_zoo_system<Sys>) zoo_scheme_set<Sys, T>::check(spec);
+    if constexpr (is_zoo_system<Sys>)
+      zoo_scheme_set<Sys, T>::check(spec);
+    else if (high_m_scheme_set<T>::applies(spec))
+      high_m_scheme_set<T>::check(spec);
   });
 }
 
@@ -183,6 +226,10 @@ std::unique_ptr<any_stepper<T>> make_stepper(std::string_view system, const sche
       zoo_scheme_set<Sys, T>::check(spec);  // before the factory, which may be a stub
       if constexpr (!zoo_scheme_set<Sys, T>::compiled) return nullptr;  // (check has thrown)
       else return make_system_stepper<Sys, T>(spec);
+    } else if (high_m_scheme_set<T>::applies(spec)) {
+      high_m_scheme_set<T>::check(spec);
+      if constexpr (!high_m_scheme_set<T>::compiled) return nullptr;  // (check has thrown)
+      else return make_high_m_stepper<Sys, T>(spec);
     } else {
       return make_system_stepper<Sys, T>(spec);
     }

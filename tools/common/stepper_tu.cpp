@@ -1,6 +1,7 @@
 /// The tools' stepper factory, instantiated for one built-in system (GEOMINT_STEPPER_SYSTEM, the
-/// qualified type, e.g. systems::pendulum) or for all zoo systems (GEOMINT_STEPPER_ZOO), in the
-/// scalar of GEOMINT_STEPPER_DIGITS (see CMakeLists.txt).
+/// qualified type, e.g. systems::pendulum; with GEOMINT_STEPPER_HIGH_M its degrees 9..16) or for
+/// all zoo systems (GEOMINT_STEPPER_ZOO), in the scalar of GEOMINT_STEPPER_DIGITS (see
+/// CMakeLists.txt).
 #include <stdexcept>
 #include <string>
 
@@ -12,11 +13,32 @@
 
 namespace geomint::tools {
 
+#if defined(GEOMINT_STEPPER_HIGH_M)
+/// m = 9..16: lpf on Gauss-interior nodes (Lagrange basis) and galerkin (high_m_scheme_set).
+template <class Sys, class T>
+std::unique_ptr<any_stepper<T>> make_high_m_stepper(const scheme_spec& spec) {
+#if GEOMINT_STEPPER_STUB
+  (void)spec;
+  throw std::invalid_argument(std::to_string(digits_of<T>()) +
+                              "-digit arithmetic is not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF)");
+#else
+  using set = high_m_scheme_set<T>;
+  set::check(spec);
+  auto make = [&]<class Scheme>() -> std::unique_ptr<any_stepper<T>> {
+    return std::make_unique<scheme_stepper<Scheme, Sys, T>>(Sys{});
+  };
+  if (spec.scheme == "galerkin")
+    return with_int<set::min_m, set::max_m>(spec.m, [&]<int M>() { return make.template operator()<galerkin_vi<M>>(); });
+  return with_int<set::min_m, set::max_m>(spec.m,
+                                          [&]<int M>() { return make.template operator()<lpf<M, gauss_interior, lagrange>>(); });
+#endif
+}
+#else
 template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec) {
 #if GEOMINT_STEPPER_STUB
   (void)spec;
-  throw std::invalid_argument(std::to_string(std::numeric_limits<T>::digits10) +
+  throw std::invalid_argument(std::to_string(digits_of<T>()) +
                               "-digit arithmetic is not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF)");
 #else
   if constexpr (is_zoo_system<Sys>)
@@ -25,9 +47,12 @@ std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec) {
     return geomint::make_stepper<Sys, T>(spec);
 #endif
 }
+#endif
 
 using scalar = scalar_for_digits<GEOMINT_STEPPER_DIGITS>;
-#if defined(GEOMINT_STEPPER_ZOO)
+#if defined(GEOMINT_STEPPER_HIGH_M)
+template std::unique_ptr<any_stepper<scalar>> make_high_m_stepper<GEOMINT_STEPPER_SYSTEM, scalar>(const scheme_spec&);
+#elif defined(GEOMINT_STEPPER_ZOO)
 // The zoo systems of free_system_types (stepper.hpp), in one unit: their restricted factories
 // are small, and one unit pays the headers' parse time (about 5 s) once instead of six times.
 template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::henon_heiles, scalar>(const scheme_spec&);

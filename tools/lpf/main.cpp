@@ -16,14 +16,16 @@ const char* usage =
     "                   [--scheme lpf|midpoint|trapezoidal|galerkin|paper23]\n"
     "                   [--nodes equispaced|lobatto|chebyshev|gauss-interior (or gauss_lobatto, ...)]\n"
     "                   [--basis lagrange|bernstein]\n"
-    "                   [--m M (2..8)] [--tau T (> 0)] [--steps N] [--every K]\n"
+    "                   [--m M (2..16)] [--tau T (> 0)] [--steps N] [--every K]\n"
     "                   [--q0 a[,b]] [--p0 a[,b]] [--digits 16|50|100] [--csv]\n"
     "                   [--compensated] [--growth] [--no-monitor]\n"
     "Integrates the system with the one-step (q, p) form of the chosen scheme. With --csv prints\n"
     "step,t,q1,...,qn,p1,...,pn,energy every K steps and at the last step, in the full precision\n"
     "of the scalar (16: double, 50/100: cpp_bin_float). p is the canonical momentum dL/dqdot.\n"
     "--nodes and --basis apply to lpf; galerkin is the degree-m Galerkin VI with m-point\n"
-    "Gauss-Legendre quadrature of the action.\n"
+    "Gauss-Legendre quadrature of the action. m = 2..8 for every scheme and node family; m = 9..16\n"
+    "for lpf --nodes gauss-interior --basis lagrange and galerkin on the built-in free systems, in\n"
+    "16 and 50 digits.\n"
     "Defaults: harmonic q0=1,qdot0=1; pendulum q0=1,qdot0=0; kepler q0=(0.5,0),qdot0=(0,sqrt 3);\n"
     "charged q0=(1,0),qdot0=(0,1); scheme lpf, equispaced, lagrange, m=2, tau=0.1, steps=100.\n"
     "Constrained systems: circle (L = 1/2|qdot|^2, f = |q|^2 - 1; q0=(1,0), p0=(0,1)) with --scheme\n"
@@ -74,7 +76,7 @@ int main(int argc, char** argv) {
       })
       .value("--basis", [&](const std::string& v) { o.basis = cli::parse_choice("--basis", v, {"lagrange", "bernstein"}); })
       .value("--digits", [&](const std::string& v) { o.digits = std::stoi(cli::parse_choice("--digits", v, {"16", "50", "100"})); })
-      .value("--m", [&](const std::string& v) { o.m = cli::parse_integer<int>("--m", v, 2, 8); })
+      .value("--m", [&](const std::string& v) { o.m = cli::parse_integer<int>("--m", v, 2, 16); })
       .value("--steps", [&](const std::string& v) { o.steps = cli::parse_integer<long>("--steps", v, 0, max_count); })
       .value("--every", [&](const std::string& v) { o.every = cli::parse_integer<long>("--every", v, 1, max_count); })
       .value("--tau", [&](const std::string& v) { o.tau = cli::checked_real_text("--tau", v, cli::real_bound::positive); })

@@ -156,6 +156,7 @@ int run_constrained_system(const options& o) {
     }
   }
   if (o.scheme != "lpf") throw std::invalid_argument("--system " + o.system + " supports --scheme lpf|paper23");
+  if (o.m > 8) throw std::invalid_argument("--system " + o.system + ": the constrained integrator is compiled for m = 2..8");
   return with_int<2, 8>(o.m, [&]<int M>() {
     return with_node_family(o.nodes, [&]<class Family>() {
       return with_basis(o.basis, [&]<class Basis>() { return run_constrained_fb<M, Family, Basis, Sys, Con, T>(o); });

@@ -40,6 +40,63 @@ constexpr std::array<T, N> barycentric_weights(const std::array<T, N>& c) {
   return w;
 }
 
+namespace core::detail {
+/// D_K[i][j] = l_j^(K)(c_i) for the Lagrange basis on the nodes c, by the barycentric recursion
+/// (exact for rational nodes, backward stable in floating point):
+///   D_1[i][j] = (w_j / w_i) / (c_i - c_j),
+///   D_k[i][j] = k / (c_i - c_j) * ((w_j / w_i) D_{k-1}[i][i] - D_{k-1}[i][j]),   i != j,
+///   D_k[i][i] = -sum_{j != i} D_k[i][j]   (the derivative of a constant vanishes);
+/// K = 0 gives the identity.
+template <int K, class T, std::size_t N>
+constexpr std::array<std::array<T, N>, N> lagrange_node_derivatives(const std::array<T, N>& c) {
+  static_assert(K >= 0, "geomint: derivative order k must be >= 0");
+  const auto w = barycentric_weights(c);
+  std::array<std::array<T, N>, N> D{};
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < N; ++j) D[i][j] = (i == j) ? T(1) : T(0);
+  for (int k = 1; k <= K; ++k) {
+    std::array<std::array<T, N>, N> next{};
+    for (std::size_t i = 0; i < N; ++i) {
+      T diagonal(0);
+      for (std::size_t j = 0; j < N; ++j) {
+        if (j == i) continue;
+        const T ratio = w[j] / w[i];
+        const T value = (k == 1) ? T(ratio / T(c[i] - c[j])) : T(T(k) / T(c[i] - c[j]) * T(ratio * D[i][i] - D[i][j]));
+        next[i][j] = value;
+        diagonal -= value;
+      }
+      next[i][i] = diagonal;
+    }
+    D = next;
+  }
+  return D;
+}
+
+/// l_j(t) for all j by the barycentric formula of the second kind,
+///   l_j(t) = (w_j / (t - c_j)) / sum_k (w_k / (t - c_k)),
+/// exactly e_i at a node t = c_i. Forward stable for node sets with a small Lebesgue constant
+/// (Higham, "The numerical stability of barycentric Lagrange interpolation", IMA J. Numer.
+/// Anal. 24 (2004) 547-556), unlike the monomial coefficients of the l_j, which lose about
+/// log10 of their largest coefficient in digits (some 2^(2m)).
+template <class T, std::size_t N>
+constexpr std::array<T, N> lagrange_values_at(const std::array<T, N>& c, const T& t) {
+  std::array<T, N> l{};
+  for (std::size_t i = 0; i < N; ++i)
+    if (t == c[i]) {
+      l[i] = T(1);
+      return l;
+    }
+  const auto w = barycentric_weights(c);
+  T sum(0);
+  for (std::size_t i = 0; i < N; ++i) {
+    l[i] = w[i] / T(t - c[i]);
+    sum += l[i];
+  }
+  for (auto& v : l) v /= sum;
+  return l;
+}
+}  // namespace core::detail
+
 /// Lagrange basis l_a(t) = prod_{b != a} (t - c_b) / (c_a - c_b) on a node family (eq. 8).
 template <class Family, int M, class T = double>
 constexpr basis_polynomials<T, M> lagrange_basis() {
@@ -118,7 +175,10 @@ constexpr T bernstein_value(int a, int n, const T& t) {
 /// k-th derivatives of all basis functions at t: out[j] = phi_j^(k)(t), any k >= 0.
 /// Bernstein uses the stable difference form
 ///   b_{j,m}^(k)(t) = m!/(m-k)! sum_i (-1)^(k-i) C(k,i) b_{j-i,m-k}(t);
-/// Lagrange evaluates the derivative polynomials (Horner).
+/// Lagrange interpolates the node derivatives: l_j^(k) has degree m - k, so
+///   l_j^(k)(t) = sum_i l_i(t) D_k[i][j]   exactly,
+/// with l_i(t) by the barycentric formula and D_k by the barycentric recursion (both stable;
+/// the monomial form of the l_j lost digits from m = 9 on in double).
 template <int K, class Basis, class Family, int M, class T>
 constexpr std::array<T, M + 1> basis_derivatives(const T& t) {
   static_assert(K >= 0, "geomint: derivative order k must be >= 0");
@@ -141,8 +201,18 @@ constexpr std::array<T, M + 1> basis_derivatives(const T& t) {
       out[static_cast<std::size_t>(j)] = falling * sum;
     }
   } else {
-    const auto basis = lagrange_basis<Family, M, T>();
-    for (int j = 0; j <= M; ++j) out[static_cast<std::size_t>(j)] = derivative<K>(basis[static_cast<std::size_t>(j)])(t);
+    const auto c = nodes<Family, M, T>();
+    const auto l = core::detail::lagrange_values_at(c, t);
+    if constexpr (K == 0) {
+      out = l;
+    } else {
+      const auto D = core::detail::lagrange_node_derivatives<K>(c);
+      for (std::size_t j = 0; j < l.size(); ++j) {
+        T sum(0);
+        for (std::size_t i = 0; i < l.size(); ++i) sum += l[i] * D[i][j];
+        out[j] = sum;
+      }
+    }
   }
   return out;
 }

@@ -2,11 +2,9 @@
 /// Differentiation weights D_k[i][j] = phi_j^(k)(c_i): the k-th derivative at node c_i of the
 /// path sum_j phi_j(t) X_j is sum_j D_k[i][j] X_j (on a unit step; divide by tau^k).
 ///
-/// Lagrange weights use the barycentric recursion (exact for rational nodes, and backward
-/// stable in floating point, unlike differentiating monomial coefficients):
-///   D_1[i][j] = (w_j / w_i) / (c_i - c_j),
-///   D_k[i][j] = k / (c_i - c_j) * ((w_j / w_i) D_{k-1}[i][i] - D_{k-1}[i][j]),   i != j,
-///   D_k[i][i] = -sum_{j != i} D_k[i][j]   (the derivative of a constant vanishes).
+/// Lagrange weights use the barycentric recursion (`core::detail::lagrange_node_derivatives`,
+/// core/basis.hpp: exact for rational nodes, and backward stable in floating point, unlike
+/// differentiating monomial coefficients).
 /// Bernstein weights evaluate the stable difference form of basis_derivatives at the nodes.
 
 #include <array>
@@ -31,25 +29,7 @@ constexpr square_array<T, M + 1> differentiation_weights() {
   if constexpr (std::is_same_v<Basis, bernstein>) {
     for (std::size_t i = 0; i < n; ++i) D[i] = basis_derivatives<K, bernstein, Family, M, T>(c[i]);
   } else {
-    const auto w = barycentric_weights(c);
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < n; ++j) D[i][j] = (i == j) ? T(1) : T(0);
-    for (int k = 1; k <= K; ++k) {
-      square_array<T, M + 1> next{};
-      for (std::size_t i = 0; i < n; ++i) {
-        T diagonal(0);
-        for (std::size_t j = 0; j < n; ++j) {
-          if (j == i) continue;
-          const T ratio = w[j] / w[i];
-          const T value = (k == 1) ? T(ratio / T(c[i] - c[j]))
-                                   : T(T(k) / T(c[i] - c[j]) * T(ratio * D[i][i] - D[i][j]));
-          next[i][j] = value;
-          diagonal -= value;
-        }
-        next[i][i] = diagonal;
-      }
-      D = next;
-    }
+    D = core::detail::lagrange_node_derivatives<K>(c);
   }
   return D;
 }
