@@ -21,12 +21,14 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "geomint/beam/grid.hpp"
 #include "geomint/beam/kernels.hpp"
 #include "geomint/beam/material.hpp"
+#include "geomint/beam/paired_kernels.hpp"
 #include "geomint/lie/se3.hpp"
 #include "geomint/solvers/step_status.hpp"
 
@@ -136,16 +138,17 @@ class integrator {
       g_.assign(J + 1, lie::SE3<T>::identity());
       g_ = chain_from(g_[0]);
     }
-    zeta_.resize(J + 1);
-    for (int j = 0; j <= J; ++j) zeta_[j] = d1inv_.cwiseProduct(mu_[j]);
-    sigma_.resize(J);
-    force_.resize(J);
-    for (int j = 0; j < J; ++j) segment_stress(gamma_[j], sigma_[j], force_[j]);
+    dt_over_ds_ = opt_.dt / ds_;
+    stress_left_.resize(J);
+    stress_right_.resize(J);
+    for (int j = 0; j < J; ++j) {
+      vec6<T> sigma;
+      segment_stress(gamma_[j], sigma, stress_left_[j], stress_right_[j]);
+    }
     mu_next_ = mu_;
-    zeta_next_ = zeta_;
     gamma_next_ = gamma_;
-    sigma_next_ = sigma_;
-    force_next_ = force_;
+    stress_left_next_ = stress_left_;
+    stress_right_next_ = stress_right_;
     g_next_ = g_;
     energy0_ = energy();
   }
@@ -180,8 +183,8 @@ class integrator {
   /// Total energy ds (sum_j 1/2 <mu_j, zeta_j> + sum_segments 1/2 <sigma, gamma>).
   T energy() const {
     T k = T(0), p = T(0);
-    for (std::size_t j = 0; j < mu_.size(); ++j) k += mu_[j].dot(zeta_[j]);
-    for (std::size_t j = 0; j < gamma_.size(); ++j) p += sigma_[j].dot(gamma_[j]);
+    for (std::size_t j = 0; j < mu_.size(); ++j) k += kinetic_term(mu_[j]);
+    for (std::size_t j = 0; j < gamma_.size(); ++j) p += potential_term(gamma_[j]);
     return ds_ * (k + p) / T(2);
   }
 
@@ -190,8 +193,8 @@ class integrator {
     d.step = step_;
     d.t = time();
     T k = T(0), p = T(0);
-    for (std::size_t j = 0; j < mu_.size(); ++j) k += mu_[j].dot(zeta_[j]);
-    for (std::size_t j = 0; j < gamma_.size(); ++j) p += sigma_[j].dot(gamma_[j]);
+    for (std::size_t j = 0; j < mu_.size(); ++j) k += kinetic_term(mu_[j]);
+    for (std::size_t j = 0; j < gamma_.size(); ++j) p += potential_term(gamma_[j]);
     d.kinetic = ds_ * k / T(2);
     d.potential = ds_ * p / T(2);
     d.total = d.kinetic + d.potential;
@@ -228,59 +231,162 @@ class integrator {
   /// One step without throwing: the failure (reason, step index k = steps taken, node) or
   /// success; on failure the state is unchanged and `failure_detail()` explains it.
   step_status try_step() {
+    const bool poisson = opt_.method == scheme::poisson;
+    switch (opt_.velocity) {
+      case cayley_velocity::previous:
+        return poisson ? (structured_ ? sweep<true, true, cayley_velocity::previous>() : sweep<true, false, cayley_velocity::previous>())
+                       : (structured_ ? sweep<false, true, cayley_velocity::previous>() : sweep<false, false, cayley_velocity::previous>());
+      case cayley_velocity::current:
+        return poisson ? (structured_ ? sweep<true, true, cayley_velocity::current>() : sweep<true, false, cayley_velocity::current>())
+                       : (structured_ ? sweep<false, true, cayley_velocity::current>() : sweep<false, false, cayley_velocity::current>());
+      default:
+        return poisson ? (structured_ ? sweep<true, true, cayley_velocity::midpoint>() : sweep<true, false, cayley_velocity::midpoint>())
+                       : (structured_ ? sweep<false, true, cayley_velocity::midpoint>() : sweep<false, false, cayley_velocity::midpoint>());
+    }
+  }
+
+  /// Why the last failed step failed (empty after a successful step).
+  const std::string& failure_detail() const { return failure_detail_; }
+
+ private:
+  // sigma = D2 gamma, force = [gamma + e2, sigma]^*, and the two ways the segment enters the
+  // stress term F of (53) at its end nodes: at its left node j (segment j + 1/2)
+  // sigma/ds - force/2, at its right node j + 1 (segment (j + 1) - 1/2) sigma/ds + force/2.
+  void segment_stress(const vec6<T>& gamma, vec6<T>& sigma, vec6<T>& left, vec6<T>& right) const {
+    sigma = mat_.D2.cwiseProduct(gamma);
+    const vec6<T> Gamma = gamma + axis<T>();
+    const vec6<T> force = lie::dual_bracket<T>(Gamma, sigma);
+    const vec6<T> sigma_ds = sigma / ds_;
+    left = sigma_ds - force / T(2);
+    right = sigma_ds + force / T(2);
+  }
+
+  // <mu, D1^{-1} mu> and <D2 gamma, gamma>: the summands of the energy.
+  T kinetic_term(const vec6<T>& mu) const {
+    const vec6<T> zeta = d1inv_.cwiseProduct(mu);
+    return mu.dot(zeta);
+  }
+  T potential_term(const vec6<T>& gamma) const {
+    const vec6<T> sigma = mat_.D2.cwiseProduct(gamma);
+    return sigma.dot(gamma);
+  }
+
+  // One step as a single sweep over the nodes, specialised on the options: at node j the
+  // node solve (53), then the segment j - 1/2 (54) (both its end velocities are then known),
+  // then the reconstruction (55) of node j, and the energy sums. Same arithmetic, in the same
+  // order, as solving all nodes, then all segments, then all reconstructions; writes only the
+  // *_next_ buffers, swapped in when every check has passed.
+  template <bool Poisson, bool Structured, cayley_velocity Velocity>
+  step_status sweep() {
     const int J = grid_.segments;
     const T dt = opt_.dt, h = opt_.dt / T(2);
     const long n1 = step_ + 1;
-    const bool poisson = opt_.method == scheme::poisson;
-    // 1. Scheme (53) per node.
-    for (int j = 0; j <= J; ++j) {
+    const int max_newton = opt_.max_newton_iterations;
+    long iterations = 0;
+    int max_iterations = stats_.max_iterations;
+    auto flush_statistics = [&](int solves) {
+      stats_.solves += solves;
+      stats_.iterations += iterations;
+      stats_.max_iterations = max_iterations;
+    };
+    T k = T(0), p = T(0);
+    T finite_g = T(0);  // sum of (v - v) over every new configuration entry: 0, or NaN if one is not finite
+    vec6<T> zeta_left;  // zeta_{j-1}^{n+1}
+    step_status failure;
+    // Node j, then segment j - 1/2, then the reconstruction of node j; false on failure.
+    auto one_node = [&](int j) -> bool {
       vec6<T> F = vec6<T>::Zero();
-      if (j < J) F += sigma_[j] / ds_ - force_[j] / T(2);
-      if (j > 0) F -= sigma_[j - 1] / ds_ + force_[j - 1] / T(2);
+      if (j < J) F += stress_left_[j];
+      if (j > 0) F -= stress_right_[j - 1];
       const vec6<T>& m = mu_[j];
       vec6<T> c;
-      if (poisson)
+      if constexpr (Poisson) {
         c = m + h * F;
-      else
-        c = m + dt * F + h * lie::dual_bracket<T>(zeta_[j], m);
+      } else {
+        const vec6<T> zeta = d1inv_.cwiseProduct(m);
+        c = m + dt * F + h * lie::dual_bracket<T>(zeta, m);
+      }
       // Predictor: one fixed-point step of x = c + h Q(x) from x = c (error O(h^2)); the
       // structured path only needs the rotational part, pi = c_pi + h c_pi x (Dr c_pi).
       vec6<T> x = c;
-      if (structured_) {
+      newton_result<T> r;
+      if constexpr (Structured) {
         const vec3<T> cpi = c.template head<3>();
         x.template head<3>() += h * cpi.cross(vec3<T>(d1inv_.template head<3>().cwiseProduct(cpi)));
+        r = solve_node_isotropic<T>(x, c, h, d1inv_, max_newton);
       } else {
         x += h * rigid_bracket<T>(c, d1inv_);
+        r = solve_node<T>(x, c, h, d1inv_, max_newton);
       }
-      const newton_result<T> r = structured_ ? solve_node_isotropic<T>(x, c, h, d1inv_, opt_.max_newton_iterations)
-                                             : solve_node<T>(x, c, h, d1inv_, opt_.max_newton_iterations);
-      stats_.solves += 1;
-      stats_.iterations += r.iterations;
-      stats_.max_iterations = std::max(stats_.max_iterations, r.iterations);
-      if (!r.finite) return fail_non_finite(n1, j, "the Newton solve of scheme (53)");
-      if (!r.converged) return fail_newton(n1, j, r);
-      mu_next_[j] = poisson ? vec6<T>(T(2) * x - m) : x;
-      zeta_next_[j] = d1inv_.cwiseProduct(mu_next_[j]);
-    }
-    // 2. Scheme (54) per segment.
-    for (int j = 0; j < J; ++j) {
-      gamma_next_[j] = segment_update<T>(gamma_[j], zeta_next_[j], zeta_next_[j + 1], dt, ds_);
-      segment_stress(gamma_next_[j], sigma_next_[j], force_next_[j]);
-    }
-    // 3. Cayley reconstruction (55).
-    for (int j = 0; j <= J; ++j) {
+      iterations += r.iterations;
+      max_iterations = std::max(max_iterations, r.iterations);
+      if (!r.finite || !r.converged) {
+        flush_statistics(j + 1);
+        failure = !r.finite ? fail_non_finite(n1, j, "the Newton solve of scheme (53)") : fail_newton(n1, j, r);
+        return false;
+      }
+      vec6<T>& mu_new = mu_next_[j];
+      if constexpr (Poisson)
+        mu_new = T(2) * x - m;
+      else
+        mu_new = x;
+      const vec6<T> zeta_new = d1inv_.cwiseProduct(mu_new);
+      k += mu_new.dot(zeta_new);
+      // 2. Scheme (54) on the segment j - 1/2 between nodes j - 1 and j.
+      if (j > 0) {
+        vec6<T>& gamma_new = gamma_next_[j - 1];
+        gamma_new = segment_update<T>(gamma_[j - 1], zeta_left, zeta_new, dt, h, dt_over_ds_);
+        vec6<T> sigma;
+        segment_stress(gamma_new, sigma, stress_left_next_[j - 1], stress_right_next_[j - 1]);
+        p += sigma.dot(gamma_new);
+      }
+      zeta_left = zeta_new;
+      // 3. Cayley reconstruction (55).
       vec6<T> z;
-      switch (opt_.velocity) {
-        case cayley_velocity::previous: z = zeta_[j]; break;
-        case cayley_velocity::current: z = zeta_next_[j]; break;
-        default: z = (zeta_[j] + zeta_next_[j]) / T(2); break;
+      if constexpr (Velocity == cayley_velocity::previous)
+        z = d1inv_.cwiseProduct(m);
+      else if constexpr (Velocity == cayley_velocity::current)
+        z = zeta_new;
+      else
+        z = (vec6<T>(d1inv_.cwiseProduct(m)) + zeta_new) / T(2);
+      lie::SE3<T>& g_new = g_next_[j];
+      g_new = g_[j] * lie::cay<T>(vec6<T>(dt * z));
+      finite_g += (g_new.R - g_new.R).sum() + (g_new.x - g_new.x).sum();
+      return true;
+    };
+    int j = 0;
+    if constexpr (std::is_same_v<T, double> && Structured) {
+      // Nodes 1 .. J - 1 two at a time (detail::paired_nodes, identical arithmetic per lane).
+      if (!one_node(0)) return failure;
+      j = 1;
+      detail::paired_buffers buffers{mu_, gamma_, stress_left_, stress_right_, g_,
+                                     mu_next_, gamma_next_, stress_left_next_, stress_right_next_, g_next_};
+      detail::paired_constants constants{dt, h, ds_, dt_over_ds_, {}, {}, max_newton};
+      for (int i = 0; i < 6; ++i) {
+        constants.d1inv[i] = d1inv_(i);
+        constants.d2[i] = mat_.D2(i);
       }
-      g_next_[j] = g_[j] * lie::cay<T>(vec6<T>(dt * z));
+      constexpr int velocity = Velocity == cayley_velocity::previous ? 0 : Velocity == cayley_velocity::current ? 1 : 2;
+      for (; j + 1 <= J - 1; j += 2) {
+        detail::paired_sums sums;
+        if (detail::paired_nodes<Poisson, velocity>(j, buffers, constants, zeta_left, sums)) {
+          k += sums.kinetic[0];
+          k += sums.kinetic[1];
+          p += sums.potential[0];
+          p += sums.potential[1];
+          finite_g += sums.finite_g;
+          iterations += sums.iterations[0] + sums.iterations[1];
+          max_iterations = std::max({max_iterations, sums.iterations[0], sums.iterations[1]});
+        } else {
+          // Redo the pair one node at a time: reports the failure as the one-node path does.
+          if (!one_node(j) || !one_node(j + 1)) return failure;
+        }
+      }
     }
+    for (; j <= J; ++j)
+      if (!one_node(j)) return failure;
+    flush_statistics(J + 1);
     // Checks, then commit.
-    T k = T(0), p = T(0);
-    for (int j = 0; j <= J; ++j) k += mu_next_[j].dot(zeta_next_[j]);
-    for (int j = 0; j < J; ++j) p += sigma_next_[j].dot(gamma_next_[j]);
     const T e = ds_ * (k + p) / T(2);
     if (!(e - e == T(0))) {
       for (int j = 0; j <= J; ++j)
@@ -289,9 +395,10 @@ class integrator {
         if (!gamma_next_[j].allFinite()) return fail_non_finite(n1, j, "scheme (54) (segment j + 1/2)");
       return fail_non_finite(n1, -1, "the energy");
     }
-    for (int j = 0; j <= J; ++j)
-      if (!g_next_[j].R.allFinite() || !g_next_[j].x.allFinite())
-        return fail_non_finite(n1, j, "the Cayley reconstruction (55)");
+    if (!(finite_g == T(0)))
+      for (int j = 0; j <= J; ++j)
+        if (!g_next_[j].R.allFinite() || !g_next_[j].x.allFinite())
+          return fail_non_finite(n1, j, "the Cayley reconstruction (55)");
     if (e > opt_.energy_growth_limit * energy0_) {
       std::ostringstream os;
       os << "t = " << time_string(n1) << ": the total energy grew from " << energy0_ << " to " << e << " (more than "
@@ -300,25 +407,13 @@ class integrator {
       return fail(step_failure::energy_growth, -1, 0, os.str());
     }
     mu_.swap(mu_next_);
-    zeta_.swap(zeta_next_);
     gamma_.swap(gamma_next_);
-    sigma_.swap(sigma_next_);
-    force_.swap(force_next_);
+    stress_left_.swap(stress_left_next_);
+    stress_right_.swap(stress_right_next_);
     g_.swap(g_next_);
     step_ = n1;
     failure_detail_.clear();
     return {};
-  }
-
-  /// Why the last failed step failed (empty after a successful step).
-  const std::string& failure_detail() const { return failure_detail_; }
-
- private:
-  // sigma = D2 gamma, force = [gamma + e2, sigma]^*.
-  void segment_stress(const vec6<T>& gamma, vec6<T>& sigma, vec6<T>& force) const {
-    sigma = mat_.D2.cwiseProduct(gamma);
-    const vec6<T> Gamma = gamma + axis<T>();
-    force = lie::dual_bracket<T>(Gamma, sigma);
   }
 
   configuration_vector chain_from(const lie::SE3<T>& g0) const {
@@ -371,12 +466,15 @@ class integrator {
   vec6<T> d1inv_;
   bool structured_ = false;
   T ds_;
+  T dt_over_ds_;
   long step_ = 0;
   std::string failure_detail_;
   T energy0_ = T(0);
   newton_statistics stats_;
-  state_vector mu_, zeta_, gamma_, sigma_, force_;
-  state_vector mu_next_, zeta_next_, gamma_next_, sigma_next_, force_next_;
+  state_vector mu_, gamma_;
+  /// Per segment, its stress terms in F of (53): sigma/ds - force/2 (left node), sigma/ds + force/2 (right node).
+  state_vector stress_left_, stress_right_;
+  state_vector mu_next_, gamma_next_, stress_left_next_, stress_right_next_;
   configuration_vector g_, g_next_;
 };
 

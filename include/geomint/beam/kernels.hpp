@@ -192,14 +192,14 @@ vec3<T> solve_one_plus_skew(const vec3<T>& w, const T& h, const vec3<T>& y) {
 
 /// Scheme (54) for one segment: gamma^{n+1} from gamma^n and the new velocities of its two
 /// end nodes.
+/// `h = dt / 2` and `dt_over_ds = dt / ds` are the caller's (constant over a sweep).
 template <class T>
 vec6<T> segment_update(const vec6<T>& gamma, const vec6<T>& zeta_left, const vec6<T>& zeta_right, const T& dt,
-                       const T& ds) {
-  const T h = dt / T(2);
+                       const T& h, const T& dt_over_ds) {
   const vec6<T> zbar = (zeta_left + zeta_right) / T(2);
   const vec3<T> w = zbar.template head<3>(), v = zbar.template tail<3>();
   // rhs = gamma - h [zbar, gamma] + dt (zeta_r - zeta_l)/ds - dt [zbar, e2];  [zbar, e2] = (0, w x E2).
-  vec6<T> rhs = gamma - h * lie::bracket<T>(zbar, gamma) + (dt / ds) * (zeta_right - zeta_left);
+  vec6<T> rhs = gamma - h * lie::bracket<T>(zbar, gamma) + dt_over_ds * (zeta_right - zeta_left);
   const vec3<T> w_x_e2(-w(2), T(0), w(0));  // w x (0,1,0)
   rhs.template tail<3>() -= dt * w_x_e2;
   // (I + h ad_zbar) y = rhs with ad_zbar = [[W, 0], [V, W]]: two applications of
@@ -215,6 +215,13 @@ vec6<T> segment_update(const vec6<T>& gamma, const vec6<T>& zeta_left, const vec
   y.template head<3>() = y_w;
   y.template tail<3>() = b + (hw.cross(hb) - hb) * inv;
   return y;
+}
+
+/// Scheme (54) for one segment of length ds with time step dt.
+template <class T>
+vec6<T> segment_update(const vec6<T>& gamma, const vec6<T>& zeta_left, const vec6<T>& zeta_right, const T& dt,
+                       const T& ds) {
+  return segment_update<T>(gamma, zeta_left, zeta_right, dt, T(dt / T(2)), T(dt / ds));
 }
 
 }  // namespace geomint::beam
