@@ -13,14 +13,22 @@
 
 namespace geomint::tools {
 
+#if GEOMINT_STEPPER_STUB
+/// The stub of a multiprecision unit in a build configured with GEOMINT_RUN_MULTIPRECISION=OFF.
+template <class T>
+[[noreturn]] void not_compiled() {
+  throw std::invalid_argument(std::to_string(digits_of<T>()) +
+                              "-digit arithmetic is not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF)");
+}
+#endif
+
 #if defined(GEOMINT_STEPPER_HIGH_M)
 /// m = 9..16: lpf on Gauss-interior nodes (Lagrange basis) and galerkin (high_m_scheme_set).
 template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_high_m_stepper(const scheme_spec& spec) {
 #if GEOMINT_STEPPER_STUB
   (void)spec;
-  throw std::invalid_argument(std::to_string(digits_of<T>()) +
-                              "-digit arithmetic is not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF)");
+  not_compiled<T>();
 #else
   using set = high_m_scheme_set<T>;
   set::check(spec);
@@ -38,8 +46,7 @@ template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec) {
 #if GEOMINT_STEPPER_STUB
   (void)spec;
-  throw std::invalid_argument(std::to_string(digits_of<T>()) +
-                              "-digit arithmetic is not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF)");
+  not_compiled<T>();
 #else
   if constexpr (is_zoo_system<Sys>)
     return make_zoo_stepper<Sys, T>(spec);
