@@ -4,5 +4,6 @@
 #include "geomint/beam/material.hpp"
 #include "geomint/beam/grid.hpp"
 #include "geomint/beam/kernels.hpp"
+#include "geomint/beam/paired_kernels.hpp"
 #include "geomint/beam/integrator.hpp"
 #include "geomint/beam/paper_case.hpp"

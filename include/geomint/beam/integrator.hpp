@@ -9,6 +9,9 @@
 ///      with zeta_j = zeta_j^n as printed in the paper (`cayley_velocity::previous`), or
 ///      zeta_j^{n+1} / the average of the two (options; see docs/results/beam.md for what each does to
 ///      the momentum).
+/// The three are done in one sweep over the nodes (node j, then segment j - 1/2, then the
+/// reconstruction of node j); in double, two neighbouring nodes at a time in SIMD lanes
+/// (paired_kernels.hpp), with results identical to the bit to the one-node path.
 /// The step is computed into separate buffers and committed only when every value is finite,
 /// every Newton solve has converged and the energy has not blown up; otherwise `try_step`
 /// returns the failure (reason, step index, node) and `step` throws it as an integration_error
@@ -355,6 +358,7 @@ class integrator {
       return true;
     };
     int j = 0;
+#if GEOMINT_BEAM_PAIRED_NODES
     if constexpr (std::is_same_v<T, double> && Structured) {
       // Nodes 1 .. J - 1 two at a time (detail::paired_nodes, identical arithmetic per lane).
       if (!one_node(0)) return failure;
@@ -383,6 +387,7 @@ class integrator {
         }
       }
     }
+#endif
     for (; j <= J; ++j)
       if (!one_node(j)) return failure;
     flush_statistics(J + 1);

@@ -18,6 +18,13 @@
 #include "geomint/beam/kernels.hpp"
 #include "geomint/lie/se3.hpp"
 
+#if defined(__GNUC__)  // GCC and Clang: the vector extension below
+#define GEOMINT_BEAM_PAIRED_NODES 1
+#else
+#define GEOMINT_BEAM_PAIRED_NODES 0
+#endif
+
+#if GEOMINT_BEAM_PAIRED_NODES
 namespace geomint::beam::detail {
 
 /// Two doubles, one per node: one SSE2/NEON register (GCC/Clang vector extension; arithmetic
@@ -329,3 +336,4 @@ bool paired_nodes(int j, const paired_buffers& b, const paired_constants& k, lie
 }
 
 }  // namespace geomint::beam::detail
+#endif  // GEOMINT_BEAM_PAIRED_NODES
