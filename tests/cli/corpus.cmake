@@ -59,7 +59,7 @@ geomint_cli_corpus(geomint-run "--steps is out of range" --steps 999999999999999
 geomint_cli_corpus(geomint-run "--steps is out of range" --steps -1)
 geomint_cli_corpus(geomint-run "--steps expects an integer" --steps 1.5)
 geomint_cli_corpus(geomint-run "--every is out of range" --every 0)
-geomint_cli_corpus(geomint-run "--m is out of range" --m=9)
+geomint_cli_corpus(geomint-run "--m is out of range" --m=17)
 geomint_cli_corpus(geomint-run "--m expects an integer" --m four)
 geomint_cli_corpus(geomint-run "--digits must be one of 16, 50, 100" --digits 15)
 geomint_cli_corpus(geomint-run "--system must be one of" --system moon)
