@@ -82,17 +82,36 @@ class any_stepper {
   step_monitor<T> monitor_;
 };
 
-/// The stepper of one scheme (a type such as `lpf<4, gauss_interior>`) on one system.
+namespace detail {
+/// The engine a stepper holds for a scheme engine E: its step skeleton where it has one (the
+/// schemes that differ only in their data, such as the node families of an LPF method, share
+/// it), else E itself.
+template <class E>
+struct stepper_engine {
+  using type = E;
+};
+template <class E>
+  requires requires { typename E::skeleton_type; }
+struct stepper_engine<E> {
+  using type = typename E::skeleton_type;
+};
 template <class Scheme, class Sys, class T>
-class scheme_stepper final : public any_stepper<T> {
+using stepper_engine_t = typename stepper_engine<typename Scheme::template engine<Sys, T>>::type;
+}  // namespace detail
+
+/// The stepper over one engine type on one system, compiled once per (engine, Sys, T) whatever
+/// the number of schemes that share the engine.
+template <class Engine, class Sys, class T>
+class engine_stepper : public any_stepper<T> {
   static constexpr int n = Sys::dof;
   using V = vec<T, n>;
   using typename any_stepper<T>::vector;
 
  public:
-  explicit scheme_stepper(const Sys& sys = Sys{}) : sys_(sys), engine_(sys) {}
+  engine_stepper(const Sys& sys, Engine engine, std::string name)
+      : sys_(sys), engine_(std::move(engine)), name_(std::move(name)) {}
   int dof() const override { return n; }
-  std::string name() const override { return Scheme::name(); }
+  std::string name() const override { return name_; }
 
   step_status try_step(const vector& q, const vector& p, const T& tau, vector& q1, vector& p1,
                        const newton_options<T>& opt) const override {
@@ -150,16 +169,31 @@ class scheme_stepper final : public any_stepper<T> {
     return energy_qv<Sys, T>(sys_, q, v);
   }
   Sys sys_;
-  typename Scheme::template engine<Sys, T> engine_;
+  Engine engine_;
+  std::string name_;
 };
+
+/// The stepper of one scheme (a type such as `lpf<4, gauss_interior>`) on one system.
+template <class Scheme, class Sys, class T>
+class scheme_stepper final : public engine_stepper<detail::stepper_engine_t<Scheme, Sys, T>, Sys, T> {
+ public:
+  explicit scheme_stepper(const Sys& sys = Sys{})
+      : engine_stepper<detail::stepper_engine_t<Scheme, Sys, T>, Sys, T>(
+            sys, typename Scheme::template engine<Sys, T>(sys), Scheme::name()) {}
+};
+
+/// The stepper of `Scheme` on `sys` as an engine_stepper (no class of its own per scheme).
+template <class Scheme, class Sys, class T>
+std::unique_ptr<any_stepper<T>> make_scheme_stepper(const Sys& sys = Sys{}) {
+  return std::make_unique<engine_stepper<detail::stepper_engine_t<Scheme, Sys, T>, Sys, T>>(
+      sys, typename Scheme::template engine<Sys, T>(sys), Scheme::name());
+}
 
 /// The stepper named by `spec` on `sys`; std::invalid_argument for an unknown scheme, node
 /// family or basis, or m outside stepper_min_m..stepper_max_m.
 template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_stepper(const scheme_spec& spec, const Sys& sys = Sys{}) {
-  auto make = [&]<class Scheme>() -> std::unique_ptr<any_stepper<T>> {
-    return std::make_unique<scheme_stepper<Scheme, Sys, T>>(sys);
-  };
+  auto make = [&]<class Scheme>() -> std::unique_ptr<any_stepper<T>> { return make_scheme_stepper<Scheme, Sys, T>(sys); };
   auto with_m = [&](auto&& f) {
     try {
       return with_int<stepper_min_m, stepper_max_m>(spec.m, f);

@@ -3,6 +3,7 @@
 /// against exact flows); the error cases against the documented contract.
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "catch.hpp"
 #include "geomint/mechanics/systems.hpp"
@@ -43,6 +44,14 @@ TEST_CASE("stepper: a scheme chosen by name steps exactly like the typed integra
   CHECK(by_name({"midpoint", "equispaced", "lagrange", 2}) == typed_step<midpoint_vi>(q0, qdot0, tau));
   CHECK(make_stepper<systems::kepler, double>({"lpf", "chebyshev_lobatto", "lagrange", 6})->name() ==
         lpf<6, chebyshev_lobatto>::name());
+  // The node families of one LPF method share one engine type (compiled once); each stepper
+  // keeps its own family's weights: the steps differ and each equals its typed integrator.
+  static_assert(std::is_same_v<detail::stepper_engine_t<lpf<4, gauss_interior>, systems::kepler, double>,
+                               detail::stepper_engine_t<lpf<4, equispaced>, systems::kepler, double>>);
+  static_assert(!std::is_same_v<detail::stepper_engine_t<lpf<4, gauss_interior>, systems::kepler, double>,
+                                detail::stepper_engine_t<lpf<4, gauss_interior, bernstein>, systems::kepler, double>>);
+  CHECK(by_name({"lpf", "equispaced", "lagrange", 4}) == typed_step<lpf<4, equispaced>>(q0, qdot0, tau));
+  CHECK(by_name({"lpf", "equispaced", "lagrange", 4}) != by_name({"lpf", "gauss_interior", "lagrange", 4}));
 }
 
 TEST_CASE("stepper: unknown names and m out of range are errors; a failed step leaves the output alone", "[stepper]") {

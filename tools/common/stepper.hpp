@@ -149,9 +149,7 @@ template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_zoo_stepper(const scheme_spec& spec) {
   using set = zoo_scheme_set<Sys, T>;
   set::check(spec);
-  auto make = [&]<class Scheme>() -> std::unique_ptr<any_stepper<T>> {
-    return std::make_unique<scheme_stepper<Scheme, Sys, T>>(Sys{});
-  };
+  auto make = [&]<class Scheme>() { return make_scheme_stepper<Scheme, Sys, T>(); };
   if (spec.scheme == "midpoint") return make.template operator()<midpoint_vi>();
   if (spec.scheme == "galerkin")
     return with_int<2, set::galerkin_max_m>(spec.m, [&]<int M>() { return make.template operator()<galerkin_vi<M>>(); });

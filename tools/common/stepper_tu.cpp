@@ -32,9 +32,7 @@ std::unique_ptr<any_stepper<T>> make_high_m_stepper(const scheme_spec& spec) {
 #else
   using set = high_m_scheme_set<T>;
   set::check(spec);
-  auto make = [&]<class Scheme>() -> std::unique_ptr<any_stepper<T>> {
-    return std::make_unique<scheme_stepper<Scheme, Sys, T>>(Sys{});
-  };
+  auto make = [&]<class Scheme>() { return make_scheme_stepper<Scheme, Sys, T>(); };
   if (spec.scheme == "galerkin")
     return with_int<set::min_m, set::max_m>(spec.m, [&]<int M>() { return make.template operator()<galerkin_vi<M>>(); });
   return with_int<set::min_m, set::max_m>(spec.m,

@@ -170,29 +170,21 @@ constexpr T bernstein_value(int a, int n, const T& t) {
   for (int i = 0; i < n - a; ++i) value *= one_minus_t;
   return value;
 }
-}  // namespace core::detail
 
-/// k-th derivatives of all basis functions at t: out[j] = phi_j^(k)(t), any k >= 0.
-/// Bernstein uses the stable difference form
-///   b_{j,m}^(k)(t) = m!/(m-k)! sum_i (-1)^(k-i) C(k,i) b_{j-i,m-k}(t);
-/// Lagrange interpolates the node derivatives: l_j^(k) has degree m - k, so
-///   l_j^(k)(t) = sum_i l_i(t) D_k[i][j]   exactly,
-/// with l_i(t) by the barycentric formula and D_k by the barycentric recursion (both stable;
-/// the monomial form of the l_j lost digits from m = 9 on in double).
-template <int K, class Basis, class Family, int M, class T>
-constexpr std::array<T, M + 1> basis_derivatives(const T& t) {
-  static_assert(K >= 0, "geomint: derivative order k must be >= 0");
-  check_node_parameters<Family, M, T>();
+/// Bernstein k-th derivatives at t by the stable difference form
+///   b_{j,m}^(k)(t) = m!/(m-k)! sum_i (-1)^(k-i) C(k,i) b_{j-i,m-k}(t).
+template <int K, int M, class T>
+constexpr std::array<T, M + 1> bernstein_derivatives(const T& t) {
   std::array<T, M + 1> out{};
   if constexpr (K > M) {
     for (auto& v : out) v = T(0);
-  } else if constexpr (std::is_same_v<Basis, bernstein>) {
+  } else {
     T falling(1);  // m!/(m-k)!
     for (int i = 0; i < K; ++i) falling *= T(M - i);
     for (int j = 0; j <= M; ++j) {
       T sum(0);
       for (int i = 0; i <= K; ++i) {
-        const T term = T(binomial(K, i)) * core::detail::bernstein_value<T>(j - i, M - K, t);
+        const T term = T(binomial(K, i)) * bernstein_value<T>(j - i, M - K, t);
         if ((K - i) % 2 == 0)
           sum += term;
         else
@@ -200,21 +192,48 @@ constexpr std::array<T, M + 1> basis_derivatives(const T& t) {
       }
       out[static_cast<std::size_t>(j)] = falling * sum;
     }
+  }
+  return out;
+}
+
+/// Lagrange k-th derivatives at t on the nodes c: l_j^(k) has degree m - k, so
+///   l_j^(k)(t) = sum_i l_i(t) D_k[i][j]   exactly,
+/// with l_i(t) by the barycentric formula and D_k by the barycentric recursion (both stable;
+/// the monomial form of the l_j lost digits from m = 9 on in double).
+template <int K, class T, std::size_t N>
+constexpr std::array<T, N> lagrange_derivatives_at(const std::array<T, N>& c, const T& t) {
+  std::array<T, N> out{};
+  if constexpr (K >= static_cast<int>(N)) {
+    for (auto& v : out) v = T(0);
   } else {
-    const auto c = nodes<Family, M, T>();
-    const auto l = core::detail::lagrange_values_at(c, t);
+    const auto l = lagrange_values_at(c, t);
     if constexpr (K == 0) {
       out = l;
     } else {
-      const auto D = core::detail::lagrange_node_derivatives<K>(c);
-      for (std::size_t j = 0; j < l.size(); ++j) {
+      const auto D = lagrange_node_derivatives<K>(c);
+      for (std::size_t j = 0; j < N; ++j) {
         T sum(0);
-        for (std::size_t i = 0; i < l.size(); ++i) sum += l[i] * D[i][j];
+        for (std::size_t i = 0; i < N; ++i) sum += l[i] * D[i][j];
         out[j] = sum;
       }
     }
   }
   return out;
+}
+}  // namespace core::detail
+
+/// k-th derivatives of all basis functions at t: out[j] = phi_j^(k)(t), any k >= 0 (Bernstein:
+/// `core::detail::bernstein_derivatives`; Lagrange on the family's nodes:
+/// `core::detail::lagrange_derivatives_at`). The family-free forms let code that holds the
+/// nodes at run time share one instantiation across node families.
+template <int K, class Basis, class Family, int M, class T>
+constexpr std::array<T, M + 1> basis_derivatives(const T& t) {
+  static_assert(K >= 0, "geomint: derivative order k must be >= 0");
+  check_node_parameters<Family, M, T>();
+  if constexpr (std::is_same_v<Basis, bernstein>)
+    return core::detail::bernstein_derivatives<K, M, T>(t);
+  else
+    return core::detail::lagrange_derivatives_at<K>(nodes<Family, M, T>(), t);
 }
 
 /// Values of all basis functions at t.

@@ -17,21 +17,28 @@ namespace geomint {
 template <class T, int N>
 using square_array = std::array<std::array<T, N>, N>;
 
+namespace core::detail {
+/// D_K for the basis `Basis` collocated at the nodes c (any family's): the family-free form of
+/// `differentiation_weights`, shared by every node family of the same (K, Basis, T, m).
+template <int K, class Basis, class T, std::size_t N>
+constexpr square_array<T, static_cast<int>(N)> node_differentiation_weights(const std::array<T, N>& c) {
+  static_assert(K >= 0, "geomint: derivative order k must be >= 0");
+  square_array<T, static_cast<int>(N)> D{};
+  if constexpr (std::is_same_v<Basis, bernstein>) {
+    for (std::size_t i = 0; i < N; ++i) D[i] = bernstein_derivatives<K, static_cast<int>(N) - 1, T>(c[i]);
+  } else {
+    D = lagrange_node_derivatives<K>(c);
+  }
+  return D;
+}
+}  // namespace core::detail
+
 /// D_K for the basis `Basis` collocated at the nodes of `Family`; K = 0 gives basis values.
 template <int K, class Family, int M, class T = double, class Basis = lagrange>
 constexpr square_array<T, M + 1> differentiation_weights() {
   static_assert(K >= 0, "geomint: derivative order k must be >= 0");
   static_assert(basis_kind<Basis>, "geomint: Basis must be lagrange or bernstein");
-  check_node_parameters<Family, M, T>();
-  constexpr std::size_t n = M + 1;
-  const auto c = nodes<Family, M, T>();
-  square_array<T, M + 1> D{};
-  if constexpr (std::is_same_v<Basis, bernstein>) {
-    for (std::size_t i = 0; i < n; ++i) D[i] = basis_derivatives<K, bernstein, Family, M, T>(c[i]);
-  } else {
-    D = core::detail::lagrange_node_derivatives<K>(c);
-  }
-  return D;
+  return core::detail::node_differentiation_weights<K, Basis>(nodes<Family, M, T>());
 }
 
 /// The weights as a constexpr variable (rational, double, long double).

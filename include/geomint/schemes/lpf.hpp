@@ -11,6 +11,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 
 #include "geomint/core/quadrature.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
@@ -39,6 +40,11 @@ void interior_quadrature(const std::array<T, M + 1>& c, std::array<T, M - 1>& b,
       beta[static_cast<std::size_t>(i - 1)] += w * (T(1) - gk) * l;
     }
   }
+}
+
+/// "lpf(m=4, gauss-interior, lagrange)": one function for every (m, family, basis).
+inline std::string lpf_name(int m, std::string_view family, std::string_view basis) {
+  return "lpf(m=" + std::to_string(m) + ", " + std::string(family) + ", " + std::string(basis) + ")";
 }
 
 /// One LPF step as a method of the step skeleton (step_skeleton.hpp). The unknowns are the
@@ -207,9 +213,7 @@ struct lpf {
   static constexpr int m = M;
   using family = Family;
   using basis = Basis;
-  static std::string name() {
-    return "lpf(m=" + std::to_string(M) + ", " + std::string(Family::name) + ", " + std::string(Basis::name) + ")";
-  }
+  static std::string name() { return schemes::detail::lpf_name(M, Family::name, Basis::name); }
 
   /// The method behind the step skeleton, and the engine the integrator drives.
   template <class Sys, class T>

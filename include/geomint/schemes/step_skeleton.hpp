@@ -84,11 +84,16 @@ struct path_weights {
 
   template <class Family>
   static path_weights make() {
+    return from_nodes(nodes<Family, M, T>());
+  }
+  /// The weights on the nodes c. Family-free, so all node families of one (T, m, basis) share
+  /// this code (it is most of an engine's set-up).
+  static path_weights from_nodes(const std::array<T, M + 1>& c) {
     path_weights w;
-    w.c = nodes<Family, M, T>();
-    w.D0 = to_matrix<T, M + 1>(differentiation_weights<0, Family, M, T, Basis>());
-    w.D1 = to_matrix<T, M + 1>(differentiation_weights<1, Family, M, T, Basis>());
-    w.D2 = to_matrix<T, M + 1>(differentiation_weights<2, Family, M, T, Basis>());
+    w.c = c;
+    w.D0 = to_matrix<T, M + 1>(core::detail::node_differentiation_weights<0, Basis>(c));
+    w.D1 = to_matrix<T, M + 1>(core::detail::node_differentiation_weights<1, Basis>(c));
+    w.D2 = to_matrix<T, M + 1>(core::detail::node_differentiation_weights<2, Basis>(c));
     w.D0inv = inverse_of<T, M + 1>(w.D0);
     w.extrapolate = extrapolation(w.D0, w.D0inv, w.c);
     return w;
@@ -230,6 +235,8 @@ template <class Method>
 class step_skeleton {
  public:
   using method_type = Method;
+  /// The type a derived engine (a scheme's `engine`) converts to: steppers hold this one.
+  using skeleton_type = step_skeleton;
   using T = typename Method::scalar;
   static constexpr int n = Method::dof;
   static constexpr int N = Method::unknowns;
