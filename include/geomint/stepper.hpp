@@ -9,9 +9,11 @@
 ///
 /// `make_stepper<Sys, T>` instantiates every scheme a spec can name for one (Sys, T): LPF for
 /// m = 2..8 on the four node families and both bases, Galerkin for m = 2..8, midpoint and
-/// trapezoidal. That is some 10 s (double) to 60 s (100 digits) of compile time, so a program
-/// instantiates it once per (Sys, T): `extern template` where it is used, `template` in one
-/// source file (as tools/common/stepper_tu.cpp does).
+/// trapezoidal: 65 schemes over 23 engines (the node families of one LPF method share its
+/// engine, `engine_stepper`). That is some 30 s of GCC 12 CPU time per (Sys, T) (the 12 units of
+/// tools/common: 28-34 s each, docs/results/ci.md), so a program instantiates it once per
+/// (Sys, T): `extern template` where it is used, `template` in one source file (as
+/// tools/common/stepper_tu.cpp does).
 
 #include <array>
 #include <memory>

@@ -4,6 +4,7 @@
 
 #include <geomint/geomint.hpp>
 
+#include <array>
 #include <cstddef>
 #include <utility>
 
@@ -100,6 +101,17 @@ static_assert([] {
     if (!(row[0] == rational(4) && row[1] == rational(-8) && row[2] == rational(4))) return false;
   return true;
 }());
+
+/// Nodes of no family, 0, 1/3, 1 (differentiation_weights_at): l_j' by hand from
+/// l_0 = 3 (t - 1/3)(t - 1), l_1 = -9/2 t (t - 1), l_2 = 3/2 t (t - 1/3), i.e. l_0' = 6t - 4,
+/// l_1' = 9/2 - 9t, l_2' = 3t - 1/2; Bernstein b_0' = -2(1 - t), b_1' = 2 - 4t, b_2' = 2t at 1/3.
+constexpr std::array<rational, 3> uneven_nodes{rational(0), rational(1, 3), rational(1)};
+constexpr auto D1_uneven = geomint::differentiation_weights_at<1, geomint::lagrange>(uneven_nodes);
+static_assert(D1_uneven[0][0] == rational(-4) && D1_uneven[0][1] == rational(9, 2) && D1_uneven[0][2] == rational(-1, 2));
+static_assert(D1_uneven[1][0] == rational(-2) && D1_uneven[1][1] == rational(3, 2) && D1_uneven[1][2] == rational(1, 2));
+static_assert(D1_uneven[2][0] == rational(2) && D1_uneven[2][1] == rational(-9, 2) && D1_uneven[2][2] == rational(5, 2));
+constexpr auto B1_uneven = geomint::differentiation_weights_at<1, geomint::bernstein>(uneven_nodes);
+static_assert(B1_uneven[1][0] == rational(-4, 3) && B1_uneven[1][1] == rational(2, 3) && B1_uneven[1][2] == rational(2, 3));
 
 // ---------------------------------------------------------------- identities for m = 1..max_exact_m
 /// sum_a l_a = 1 and sum_a c_a^k l_a(t) = t^k as polynomials, k <= m (polynomial reproduction).

@@ -17,28 +17,26 @@ namespace geomint {
 template <class T, int N>
 using square_array = std::array<std::array<T, N>, N>;
 
-namespace core::detail {
-/// D_K for the basis `Basis` collocated at the nodes c (any family's): the family-free form of
-/// `differentiation_weights`, shared by every node family of the same (K, Basis, T, m).
+/// D_K for the basis `Basis` collocated at the nodes c, whatever family they come from: the
+/// family-free form of `differentiation_weights`, one instantiation per (K, Basis, T, m) for
+/// code that holds the nodes at run time (schemes/step_skeleton.hpp, path_weights).
 template <int K, class Basis, class T, std::size_t N>
-constexpr square_array<T, static_cast<int>(N)> node_differentiation_weights(const std::array<T, N>& c) {
+constexpr square_array<T, static_cast<int>(N)> differentiation_weights_at(const std::array<T, N>& c) {
   static_assert(K >= 0, "geomint: derivative order k must be >= 0");
+  static_assert(basis_kind<Basis>, "geomint: Basis must be lagrange or bernstein");
   square_array<T, static_cast<int>(N)> D{};
   if constexpr (std::is_same_v<Basis, bernstein>) {
-    for (std::size_t i = 0; i < N; ++i) D[i] = bernstein_derivatives<K, static_cast<int>(N) - 1, T>(c[i]);
+    for (std::size_t i = 0; i < N; ++i) D[i] = core::detail::bernstein_derivatives<K, static_cast<int>(N) - 1, T>(c[i]);
   } else {
-    D = lagrange_node_derivatives<K>(c);
+    D = core::detail::lagrange_node_derivatives<K>(c);
   }
   return D;
 }
-}  // namespace core::detail
 
 /// D_K for the basis `Basis` collocated at the nodes of `Family`; K = 0 gives basis values.
 template <int K, class Family, int M, class T = double, class Basis = lagrange>
 constexpr square_array<T, M + 1> differentiation_weights() {
-  static_assert(K >= 0, "geomint: derivative order k must be >= 0");
-  static_assert(basis_kind<Basis>, "geomint: Basis must be lagrange or bernstein");
-  return core::detail::node_differentiation_weights<K, Basis>(nodes<Family, M, T>());
+  return differentiation_weights_at<K, Basis>(nodes<Family, M, T>());
 }
 
 /// The weights as a constexpr variable (rational, double, long double).

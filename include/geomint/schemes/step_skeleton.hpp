@@ -91,9 +91,9 @@ struct path_weights {
   static path_weights from_nodes(const std::array<T, M + 1>& c) {
     path_weights w;
     w.c = c;
-    w.D0 = to_matrix<T, M + 1>(core::detail::node_differentiation_weights<0, Basis>(c));
-    w.D1 = to_matrix<T, M + 1>(core::detail::node_differentiation_weights<1, Basis>(c));
-    w.D2 = to_matrix<T, M + 1>(core::detail::node_differentiation_weights<2, Basis>(c));
+    w.D0 = to_matrix<T, M + 1>(differentiation_weights_at<0, Basis>(c));
+    w.D1 = to_matrix<T, M + 1>(differentiation_weights_at<1, Basis>(c));
+    w.D2 = to_matrix<T, M + 1>(differentiation_weights_at<2, Basis>(c));
     w.D0inv = inverse_of<T, M + 1>(w.D0);
     w.extrapolate = extrapolation(w.D0, w.D0inv, w.c);
     return w;
