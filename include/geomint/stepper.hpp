@@ -175,20 +175,25 @@ class engine_stepper : public any_stepper<T> {
   std::string name_;
 };
 
+namespace detail {
+/// The engine_stepper that runs Scheme.
+template <class Scheme, class Sys, class T>
+using engine_stepper_of = engine_stepper<stepper_engine_t<Scheme, Sys, T>, Sys, T>;
+}  // namespace detail
+
 /// The stepper of one scheme (a type such as `lpf<4, gauss_interior>`) on one system.
 template <class Scheme, class Sys, class T>
-class scheme_stepper final : public engine_stepper<detail::stepper_engine_t<Scheme, Sys, T>, Sys, T> {
+class scheme_stepper final : public detail::engine_stepper_of<Scheme, Sys, T> {
  public:
   explicit scheme_stepper(const Sys& sys = Sys{})
-      : engine_stepper<detail::stepper_engine_t<Scheme, Sys, T>, Sys, T>(
-            sys, typename Scheme::template engine<Sys, T>(sys), Scheme::name()) {}
+      : detail::engine_stepper_of<Scheme, Sys, T>(sys, typename Scheme::template engine<Sys, T>(sys), Scheme::name()) {}
 };
 
 /// The stepper of `Scheme` on `sys` as an engine_stepper (no class of its own per scheme).
 template <class Scheme, class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_scheme_stepper(const Sys& sys = Sys{}) {
-  return std::make_unique<engine_stepper<detail::stepper_engine_t<Scheme, Sys, T>, Sys, T>>(
-      sys, typename Scheme::template engine<Sys, T>(sys), Scheme::name());
+  return std::make_unique<detail::engine_stepper_of<Scheme, Sys, T>>(sys, typename Scheme::template engine<Sys, T>(sys),
+                                                                     Scheme::name());
 }
 
 /// The stepper named by `spec` on `sys`; std::invalid_argument for an unknown scheme, node
