@@ -30,6 +30,7 @@
 #include "geomint/mechanics/zoo.hpp"
 // schemes: the step skeleton and the methods (LPF, Galerkin, midpoint, trapezoidal, constrained LPF)
 #include "geomint/schemes/step_skeleton.hpp"
+#include "geomint/schemes/path_method.hpp"
 #include "geomint/schemes/lpf.hpp"
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/constrained_lpf.hpp"

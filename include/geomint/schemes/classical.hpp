@@ -13,7 +13,7 @@
 
 #include "geomint/core/quadrature.hpp"
 #include "geomint/schemes/lpf.hpp"
-#include "geomint/schemes/step_skeleton.hpp"
+#include "geomint/schemes/path_method.hpp"
 
 namespace geomint {
 namespace schemes::detail {
@@ -24,31 +24,23 @@ namespace schemes::detail {
 /// increments Y_1..Y_M; the residual rows are tau G_0 + tau p_k (= 0, p_k = -d_1 L_d) and
 /// tau G_1..tau G_{M-1} (= 0, the path extremises the action).
 template <class Sys, class T, int M, int Q, class Basis>
-class galerkin_method {
+class galerkin_method : public path_method<Sys, T, M, Basis> {
+  using base = path_method<Sys, T, M, Basis>;
+  using base::sys_;
+
  public:
-  using scalar = T;
-  static constexpr int dof = Sys::dof;
-  static constexpr int n = dof;
-  static constexpr int unknowns = M * n;
-  using V = vec<T, n>;
-  using Z = vec<T, unknowns>;
-  using controls = Eigen::Matrix<T, n, M + 1>;
-  using D = lagrangian_derivatives<Sys, T>;
+  using base::n;
+  using base::unknowns;
+  using typename base::controls;
+  using typename base::D;
+  using typename base::V;
+  using typename base::weights;
+  using typename base::Z;
   using B = Eigen::Matrix<T, Q, M + 1>;
-  using weights = path_weights<T, M, Basis>;
 
-  /// B0(k, j) = phi_j(g_k), B1(k, j) = phi_j'(g_k), w: the quadrature weights.
-  galerkin_method(const Sys& sys, const weights& pw, const B& B0, const B& B1, const vec<T, Q>& w)
-      : sys_(sys), pw_(pw), B0_(B0), B1_(B1), w_(w) {}
-
-  bool predict(const V& q, const V& p, const T& tau, Z& z) const {
-    V v0;
-    if (!D::velocity(sys_, q, p, v0)) return false;
-    const V a0 = D::acceleration(sys_, q, v0);
-    pack_path<T, n, M, unknowns>(pw_.template quadratic<n>(v0, a0, tau), z);
-    return true;
-  }
-  void extrapolate(const Z& previous, Z& z) const { extrapolate_path<T, n, M, unknowns>(pw_.extrapolate, previous, z); }
+  /// B0(k, j) = phi_j(g_k), B1(k, j) = phi_j'(g_k), qw: the quadrature weights.
+  galerkin_method(const Sys& sys, const weights& pw, const B& B0, const B& B1, const vec<T, Q>& qw)
+      : base(sys, pw), B0_(B0), B1_(B1), qw_(qw) {}
 
   /// The iterations after the first need only first derivatives of L (J is null then).
   void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, mat<T, unknowns>* J) const {
@@ -61,18 +53,18 @@ class galerkin_method {
       if (J) {
         const hessian_data<T, n> h = D::hessian(sys_, x, v);
         for (int j = 0; j < M; ++j) {
-          F.template segment<n>(j * n) += w_[k] * (tau2 * B0_(k, j) * h.Lq + tau * B1_(k, j) * h.Lv);
+          F.template segment<n>(j * n) += qw_[k] * (tau2 * B0_(k, j) * h.Lq + tau * B1_(k, j) * h.Lv);
           for (int s = 0; s < M; ++s) {
             const int l = 1 + s;
             J->template block<n, n>(j * n, s * n) +=
-                w_[k] * ((tau2 * B0_(k, j) * B0_(k, l)) * h.Lqq + (tau * B0_(k, j) * B1_(k, l)) * h.Lqv +
+                qw_[k] * ((tau2 * B0_(k, j) * B0_(k, l)) * h.Lqq + (tau * B0_(k, j) * B1_(k, l)) * h.Lqv +
                          (tau * B1_(k, j) * B0_(k, l)) * h.Lvq + (B1_(k, j) * B1_(k, l)) * h.Lvv);
           }
         }
       } else {
         const gradient_data<T, n> g = D::gradient(sys_, x, v);
         for (int j = 0; j < M; ++j)
-          F.template segment<n>(j * n) += w_[k] * (tau2 * B0_(k, j) * g.Lq + tau * B1_(k, j) * g.Lv);
+          F.template segment<n>(j * n) += qw_[k] * (tau2 * B0_(k, j) * g.Lq + tau * B1_(k, j) * g.Lv);
       }
     }
     F.template segment<n>(0) += tau * p;  // p_k + d_1 L_d = 0
@@ -88,27 +80,15 @@ class galerkin_method {
     V sum = V::Zero();
     for (int k = 0; k < Q; ++k) {
       const V x = q + combine(Y, B0_, k), v = combine(Y, B1_, k) / tau;
-      sum += w_[k] * D::gradient(sys_, x, v).Lq;
+      sum += qw_[k] * D::gradient(sys_, x, v).Lq;
     }
     u.p = tau * sum;
     return {};
   }
 
-  /// The control points X_0..X_M of the path fitted on the step from q_k with unknowns z.
-  controls path(const V& q, const Z& z) const {
-    controls X = unpack_path<T, n, M, unknowns>(z);
-    for (int j = 0; j <= M; ++j) X.col(j) += q;
-    return X;
-  }
-
   /// G_M of the path through x0, x1 whose interior controls extremise the action.
   step_status end_momentum(const V& x0, const V& x1, const T& tau, V& p1, const newton_options<T>& opt) const {
-    controls X;
-    for (int i = 0; i <= M; ++i) X.col(i) = x0 + pw_.c[static_cast<std::size_t>(i)] * (x1 - x0);
-    const controls values = X;
-    for (int j = 0; j <= M; ++j) X.col(j) = combine(values, pw_.D0inv, j);
-    X.col(0) = x0;
-    X.col(M) = x1;
+    controls X = this->pinned_controls(this->segment_values(x0, x1), x0, x1);
     step_status st;
     if constexpr (M >= 2) {
       constexpr int N = (M - 1) * n;
@@ -126,7 +106,7 @@ class galerkin_method {
     for (int k = 0; k < Q; ++k) {
       const V x = combine(X, B0_, k), v = combine(X, B1_, k) / tau;
       const gradient_data<T, n> g = D::gradient(sys_, x, v);
-      G += w_[k] * (tau * B0_(k, M) * g.Lq + B1_(k, M) * g.Lv);
+      G += qw_[k] * (tau * B0_(k, M) * g.Lq + B1_(k, M) * g.Lv);
     }
     p1 = G;
     return st;
@@ -145,21 +125,19 @@ class galerkin_method {
       const hessian_data<T, n> h = D::hessian(sys_, x, v);
       for (int r = 0; r < blocks; ++r) {
         const int j = 1 + r;
-        F.template segment<n>(r * n) += w_[k] * (tau2 * B0_(k, j) * h.Lq + tau * B1_(k, j) * h.Lv);
+        F.template segment<n>(r * n) += qw_[k] * (tau2 * B0_(k, j) * h.Lq + tau * B1_(k, j) * h.Lv);
         for (int s = 0; s < blocks; ++s) {
           const int l = 1 + s;
           J.template block<n, n>(r * n, s * n) +=
-              w_[k] * ((tau2 * B0_(k, j) * B0_(k, l)) * h.Lqq + (tau * B0_(k, j) * B1_(k, l)) * h.Lqv +
+              qw_[k] * ((tau2 * B0_(k, j) * B0_(k, l)) * h.Lqq + (tau * B0_(k, j) * B1_(k, l)) * h.Lqv +
                        (tau * B1_(k, j) * B0_(k, l)) * h.Lvq + (B1_(k, j) * B1_(k, l)) * h.Lvv);
         }
       }
     }
   }
 
-  Sys sys_;
-  weights pw_;
   B B0_, B1_;
-  vec<T, Q> w_;
+  vec<T, Q> qw_;
 };
 
 /// The path weights of a degree-1 path (c = 0, 1): the midpoint and trapezoidal rules.

@@ -23,7 +23,7 @@
 #include <string>
 
 #include "geomint/mechanics/constraint.hpp"
-#include "geomint/schemes/step_skeleton.hpp"
+#include "geomint/schemes/path_method.hpp"
 
 namespace geomint {
 
@@ -32,41 +32,31 @@ enum class endpoint_terms { keep, drop };
 
 namespace schemes::detail {
 
-/// One constrained LPF step as a method of the step skeleton (step_skeleton.hpp). Unknowns:
+/// One constrained LPF step as a method of the step skeleton (step_skeleton.hpp, path_method.hpp). Unknowns:
 /// the increments Y_1..Y_m of the path (X_j = q_k + Y_j), the scaled multipliers
 /// mu_1..mu_{m-1} of the interior nodes and nu of the jump at t_k. With `drop`, the two-step
 /// form's residual leaves out nu and the end condition f(X_m) = 0 (the paper's scheme (23)).
 template <class Sys, class Con, class T, int M, class Basis>
-class constrained_lpf_method {
- public:
-  using scalar = T;
-  static constexpr int dof = Sys::dof;
-  static constexpr int n = dof;
-  static constexpr int c = Con::count;
-  static constexpr int unknowns = M * (n + c);
-  using V = vec<T, n>;
-  using Z = vec<T, unknowns>;
-  using controls = Eigen::Matrix<T, n, M + 1>;
-  using D = lagrangian_derivatives<Sys, T>;
-  using F = constraint_derivatives<Con, T, n>;
-  using weights = path_weights<T, M, Basis>;
+class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::dof + Con::count)> {
+  using base = path_method<Sys, T, M, Basis, M * (Sys::dof + Con::count)>;
+  using base::sys_;
+  using base::w_;
 
-  constrained_lpf_method(const Sys& sys, const Con& con, const weights& w) : sys_(sys), con_(con), w_(w) {}
+ public:
+  using base::n;
+  using base::unknowns;
+  using typename base::controls;
+  using typename base::D;
+  using typename base::V;
+  using typename base::weights;
+  using typename base::Z;
+  static constexpr int c = Con::count;
+  using F = constraint_derivatives<Con, T, n>;
+
+  constrained_lpf_method(const Sys& sys, const Con& con, const weights& w) : base(sys, w), con_(con) {}
 
   const Sys& system() const { return sys_; }
   const Con& constraints() const { return con_; }
-
-  /// The quadratic Taylor polynomial of the path, multipliers zero.
-  bool predict(const V& q, const V& p, const T& tau, Z& z) const {
-    V v0;
-    if (!D::velocity(sys_, q, p, v0)) return false;
-    const V a0 = D::acceleration(sys_, q, v0);
-    z.setZero();
-    pack_path<T, n, M, unknowns>(w_.template quadratic<n>(v0, a0, tau), z);
-    return true;
-  }
-  /// The previous path extrapolated; the multipliers (in z already) kept.
-  void extrapolate(const Z& previous, Z& z) const { extrapolate_path<T, n, M, unknowns>(w_.extrapolate, previous, z); }
 
   void residual(const V& q, const V& p, const T& tau, const Z& z, Z& Fv, mat<T, unknowns>* J) const {
     forward_residual<unknowns, true>(q, p, tau, z, Fv, J);
@@ -85,13 +75,6 @@ class constrained_lpf_method {
     return st;
   }
 
-  /// The control points X_0..X_m of the path fitted on the step from q_k with unknowns z.
-  controls path(const V& q, const Z& z) const {
-    controls X = unpack_path<T, n, M, unknowns>(z);
-    for (int j = 0; j <= M; ++j) X.col(j) += q;
-    return X;
-  }
-
   /// The two-step form (x^{k-1}, x^k) -> x^{k+1}: momentum at t_k from the constrained path on
   /// [t_{k-1}, t_k], then the forward solve with or without eq. (5)'s end terms.
   step_status two_step(const V& x_prev, const V& x_curr, const T& tau, endpoint_terms ends, V& x_next,
@@ -106,12 +89,7 @@ class constrained_lpf_method {
   /// dL/dqdot at t_k of the path on [t_{k-1}, t_k] through x^{k-1}, x^k whose interior nodes
   /// satisfy eq. (4) and f = 0 (eq. 10).
   step_status end_momentum(const V& x0, const V& x1, const T& tau, V& p1, const newton_options<T>& opt) const {
-    controls X;
-    for (int i = 0; i <= M; ++i) X.col(i) = x0 + w_.c[static_cast<std::size_t>(i)] * (x1 - x0);
-    const controls values = X;
-    for (int j = 0; j <= M; ++j) X.col(j) = combine(values, w_.D0inv, j);
-    X.col(0) = x0;
-    X.col(M) = x1;
+    controls X = this->pinned_controls(this->segment_values(x0, x1), x0, x1);
     constexpr int N = (M - 1) * (n + c);
     vec<T, N> z = vec<T, N>::Zero();
     for (int j = 1; j < M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
@@ -246,9 +224,7 @@ class constrained_lpf_method {
     J->template block<n, c>(row * n, mu_col) = -g.G.transpose();
   }
 
-  Sys sys_;
   Con con_;
-  weights w_;
 };
 
 }  // namespace schemes::detail

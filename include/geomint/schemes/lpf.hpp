@@ -14,8 +14,7 @@
 #include <string_view>
 
 #include "geomint/core/quadrature.hpp"
-#include "geomint/mechanics/lagrangian.hpp"
-#include "geomint/schemes/step_skeleton.hpp"
+#include "geomint/schemes/path_method.hpp"
 
 namespace geomint {
 namespace schemes::detail {
@@ -47,38 +46,29 @@ inline std::string lpf_name(int m, std::string_view family, std::string_view bas
   return "lpf(m=" + std::to_string(m) + ", " + std::string(family) + ", " + std::string(basis) + ")";
 }
 
-/// One LPF step as a method of the step skeleton (step_skeleton.hpp). The unknowns are the
+/// One LPF step as a method of the step skeleton (step_skeleton.hpp, path_method.hpp). The unknowns are the
 /// increments Y_j = X_j - q_k (j = 1..m): both bases are partitions of unity, so
 /// x(c_i) = q_k + sum_j D0(i, j) Y_j and the derivative rows act on Y alone. The increments are
 /// O(tau), so the differentiation weights do not amplify the round-off of q_k.
 template <class Sys, class T, int M, class Basis>
-class lpf_method {
- public:
-  using scalar = T;
-  static constexpr int dof = Sys::dof;
-  static constexpr int n = dof;
-  static constexpr int unknowns = M * n;
-  using V = vec<T, n>;
-  using Z = vec<T, unknowns>;
-  using controls = Eigen::Matrix<T, n, M + 1>;
-  using D = lagrangian_derivatives<Sys, T>;
-  using weights = path_weights<T, M, Basis>;
+class lpf_method : public path_method<Sys, T, M, Basis> {
+  using base = path_method<Sys, T, M, Basis>;
+  using base::sys_;
+  using base::w_;
 
-  lpf_method(const Sys& sys, const weights& w) : sys_(sys), w_(w) {
+ public:
+  using base::n;
+  using base::unknowns;
+  using typename base::controls;
+  using typename base::D;
+  using typename base::V;
+  using typename base::weights;
+  using typename base::Z;
+
+  lpf_method(const Sys& sys, const weights& w) : base(sys, w) {
     interior_quadrature<T, M>(w_.c, quad_b_, quad_beta_);
     if constexpr (natural_system<Sys>) minv_ = inverse_of<T, n>(Sys::template mass_matrix<T>());
   }
-
-  /// The quadratic Taylor polynomial q + s qdot + s^2 qddot / 2 at the nodes.
-  bool predict(const V& q, const V& p, const T& tau, Z& z) const {
-    V v0;
-    if (!D::velocity(sys_, q, p, v0)) return false;
-    const V a0 = D::acceleration(sys_, q, v0);
-    pack_path<T, n, M, unknowns>(w_.template quadratic<n>(v0, a0, tau), z);
-    return true;
-  }
-  /// The previous path extrapolated to [t_k, t_k + tau] (error O(tau^(m+1))).
-  void extrapolate(const Z& previous, Z& z) const { extrapolate_path<T, n, M, unknowns>(w_.extrapolate, previous, z); }
 
   /// Row block 0: tau (dL/dxdot(t_k) - p_k) = 0 (eq. 9 with eq. 11); row blocks 1..m-1:
   /// tau^2 E(x(c_i), xdot(c_i), xddot(c_i)) = 0 (eq. 12).
@@ -147,27 +137,17 @@ class lpf_method {
     return {};
   }
 
-  /// The control points X_0..X_m of the path fitted on the step from q_k with unknowns z.
-  controls path(const V& q, const Z& z) const {
-    controls X = unpack_path<T, n, M, unknowns>(z);
-    for (int j = 0; j <= M; ++j) X.col(j) += q;
-    return X;
-  }
-
   /// dL/dxdot at t_{k} of the path fitted on [t_{k-1}, t_k] through x^{k-1} and x^k: solve
   /// eq. (12) for the interior unknowns with both ends fixed, then eq. (10).
   step_status end_momentum(const V& x0, const V& x1, const T& tau, V& p1, const newton_options<T>& opt) const {
     const V vbar = (x1 - x0) / tau;
     const V a = D::acceleration(sys_, x0, vbar);
-    controls X;
+    controls values;  // the parabola through x0, x1 with acceleration a
     for (int i = 0; i <= M; ++i) {
       const T s = w_.c[static_cast<std::size_t>(i)];
-      X.col(i) = x0 + s * (x1 - x0) + (tau * tau * s * (s - T(1)) / T(2)) * a;
+      values.col(i) = x0 + s * (x1 - x0) + (tau * tau * s * (s - T(1)) / T(2)) * a;
     }
-    const controls values = X;
-    for (int j = 0; j <= M; ++j) X.col(j) = combine(values, w_.D0inv, j);
-    X.col(0) = x0;
-    X.col(M) = x1;
+    controls X = this->pinned_controls(values, x0, x1);
     constexpr int N = (M - 1) * n;
     vec<T, N> z;
     for (int j = 1; j < M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
@@ -194,8 +174,6 @@ class lpf_method {
   }
 
  private:
-  Sys sys_;
-  weights w_;
   std::array<T, M - 1> quad_b_, quad_beta_;
   mat<T, n> minv_ = mat<T, n>::Zero();  // M^{-1} (natural systems)
 };
