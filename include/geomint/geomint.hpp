@@ -32,6 +32,7 @@
 #include "geomint/schemes/step_skeleton.hpp"
 #include "geomint/schemes/path_method.hpp"
 #include "geomint/schemes/lpf.hpp"
+#include "geomint/schemes/lpf_fixed_point.hpp"
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/constrained_lpf.hpp"
 #include "geomint/schemes/paper_schemes.hpp"

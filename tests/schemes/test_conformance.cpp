@@ -16,6 +16,7 @@
 #include "catch.hpp"
 #include "geomint/analysis/symplecticity.hpp"
 #include "geomint/integrator.hpp"
+#include "geomint/schemes/lpf_fixed_point.hpp"
 #include "geomint/mechanics/constrained_systems.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/constrained_integrator.hpp"
@@ -27,9 +28,10 @@ using boost::multiprecision::cpp_bin_float_50;
 
 namespace {
 
-/// One representative of every scheme kind, on every node family and both bases.
+/// One representative of every scheme kind, on every node family and both bases (and LPF's
+/// fixed-point form, schemes/lpf_fixed_point.hpp).
 using schemes = std::tuple<lpf<2>, lpf<3, gauss_lobatto>, lpf<4, gauss_interior>, lpf<4, chebyshev_lobatto, bernstein>,
-                           galerkin_vi<3>, midpoint_vi, trapezoidal_vi>;
+                           galerkin_vi<3>, midpoint_vi, trapezoidal_vi, lpf_fixed_point<4>>;
 
 /// Every scheme x {double, cpp_bin_float_50}.
 using cases = std::tuple<std::pair<lpf<2>, double>, std::pair<lpf<2>, cpp_bin_float_50>,
@@ -39,7 +41,8 @@ using cases = std::tuple<std::pair<lpf<2>, double>, std::pair<lpf<2>, cpp_bin_fl
                          std::pair<lpf<4, chebyshev_lobatto, bernstein>, cpp_bin_float_50>,
                          std::pair<galerkin_vi<3>, double>, std::pair<galerkin_vi<3>, cpp_bin_float_50>,
                          std::pair<midpoint_vi, double>, std::pair<midpoint_vi, cpp_bin_float_50>,
-                         std::pair<trapezoidal_vi, double>, std::pair<trapezoidal_vi, cpp_bin_float_50>>;
+                         std::pair<trapezoidal_vi, double>, std::pair<trapezoidal_vi, cpp_bin_float_50>,
+                         std::pair<lpf_fixed_point<4>, double>, std::pair<lpf_fixed_point<4>, cpp_bin_float_50>>;
 
 template <class T>
 T abs_of(const T& x) {

@@ -16,6 +16,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "cli.hpp"
+#include "energy_growth.hpp"
 #include "run.hpp"
 #include "stepper.hpp"
 
@@ -67,47 +68,6 @@ std::pair<dynamic_vector<T>, dynamic_vector<T>> initial_data(const options& o, c
   return {q, p};
 }
 
-/// The growth of the energy error with t (--growth): the RMS of |E - E0| over the windows of
-/// steps [2^j, 2^(j+1)), and the least-squares slope of log RMS against log t (t at the
-/// window's geometric middle) over the windows from step 2^10 on. Round-off that accumulates as
-/// a random walk gives 1/2 (Brouwer's law), a systematic one 1.
-struct energy_growth {
-  static constexpr int first_window = 10;
-  std::vector<double> sum_squares, count;
-  void add(long step, double dE) {
-    int j = 0;
-    while ((2L << j) <= step) ++j;  // 2^j <= step < 2^(j+1)
-    if (static_cast<int>(sum_squares.size()) <= j) {
-      sum_squares.resize(static_cast<std::size_t>(j) + 1, 0.0);
-      count.resize(static_cast<std::size_t>(j) + 1, 0.0);
-    }
-    sum_squares[static_cast<std::size_t>(j)] += dE * dE;
-    count[static_cast<std::size_t>(j)] += 1.0;
-  }
-  void print(std::ostream& out, double tau) const {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
-    out << "window,steps_from,t_mid,rms_energy_error\n";
-    for (std::size_t j = 0; j < sum_squares.size(); ++j) {
-      if (count[j] == 0) continue;
-      const double t_mid = tau * std::ldexp(std::sqrt(2.0), static_cast<int>(j));
-      const double rms = std::sqrt(sum_squares[j] / count[j]);
-      out << j << ',' << (1L << j) << ',' << t_mid << ',' << rms << '\n';
-      if (static_cast<int>(j) < first_window || !(rms > 0)) continue;
-      const double x = std::log(t_mid), y = std::log(rms);
-      sx += x;
-      sy += y;
-      sxx += x * x;
-      sxy += x * y;
-      m += 1;
-    }
-    if (m >= 2)
-      out << "growth_exponent=" << (m * sxy - sx * sy) / (m * sxx - sx * sx) << " (windows from step "
-          << (1L << first_window) << ": " << m << ")\n";
-    else
-      out << "growth_exponent=undefined (fewer than two windows from step " << (1L << first_window) << ")\n";
-  }
-};
-
 /// The integration loop of geomint-run for a free system, in the scalar T.
 template <class T>
 int run_free_system(const options& o) {
@@ -145,7 +105,7 @@ int run_free_system(const options& o) {
   T max_dE(0);
   dynamic_vector<T> q1 = q, p1 = p;
   dynamic_vector<T> q_carry = dynamic_vector<T>::Zero(n), p_carry = dynamic_vector<T>::Zero(n);
-  energy_growth growth;
+  tools::energy_growth growth;
   // CPU time of the stepping loop (steps, energy monitor and rows), printed to stderr as
   // cpu_seconds=X so that outside tools can time a run without the process start-up.
   timespec cpu_start{};

@@ -25,6 +25,7 @@
 #include "geomint/analysis/composition.hpp"
 #include "geomint/analysis/reference_flow.hpp"
 #include "geomint/integrator.hpp"
+#include "geomint/schemes/lpf_fixed_point.hpp"
 #include "problems.hpp"
 
 namespace geomint::workprecision {

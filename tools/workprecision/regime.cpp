@@ -39,6 +39,10 @@ std::vector<method<T, P::n>> methods_16(bool compensated) {
   all.push_back(geomint_method<P, lpf<10, gauss_interior>, T>("lpf-m10-gauss-interior", 300, compensated));
   all.push_back(geomint_method<P, lpf<12, gauss_interior>, T>("lpf-m12-gauss-interior", 300, compensated));
   all.push_back(geomint_method<P, lpf<16, gauss_interior>, T>("lpf-m16-gauss-interior", 250, compensated));
+  all.push_back(geomint_method<P, lpf_fixed_point<6>, T>("lpf-fixed-point-m6", 500, compensated));
+  all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8", 500, compensated));
+  all.push_back(geomint_method<P, lpf_fixed_point<10>, T>("lpf-fixed-point-m10", 300, compensated));
+  all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12", 300, compensated));
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
       "odeint-symplectic_rkn_sb3a_mclachlan", 4000));
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
@@ -66,6 +70,9 @@ std::vector<method<T, P::n>> methods_50(bool compensated) {
   all.push_back(geomint_method<P, lpf<10, gauss_interior>, T>("lpf-m10-gauss-interior", 100, compensated));
   all.push_back(geomint_method<P, lpf<12, gauss_interior>, T>("lpf-m12-gauss-interior", 100, compensated));
   all.push_back(geomint_method<P, lpf<16, gauss_interior>, T>("lpf-m16-gauss-interior", 100, compensated));
+  all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8", 200, compensated));
+  all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12", 100, compensated));
+  all.push_back(geomint_method<P, lpf_fixed_point<16>, T>("lpf-fixed-point-m16", 100, compensated));
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
       "odeint-symplectic_rkn_sb3a_m4_mclachlan", 10000));
   all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 24));

@@ -1,0 +1,302 @@
+#pragma once
+/// LPF on Gauss-interior nodes for natural systems, solved by fixed-point iteration with
+/// floating-point coefficients that are exactly symplectic.
+///
+/// For a natural system (L = qdot^T M qdot / 2 - V(q), M constant) the LPF path of degree m
+/// with the Euler-Lagrange equations at the m-1 interior Gauss nodes (lpf.hpp, eq. 12) is the
+/// s = m-1 stage Nystrom collocation method at the Gauss points (Hairer, Lubich & Wanner 2006,
+/// sections II.1.4 and VI.4; docs/references.md): with v = M^{-1} p and the momentum increments
+/// F_i = tau b_i f(Q_i), f = -grad V,
+///
+///   Q_i     = q + tau (c_i v + M^{-1} sum_j mu_ij F_j)        (mu_ij = abar_ij / b_j)
+///   p_{k+1} = p + sum_i F_i
+///   q_{k+1} = q + tau (v + M^{-1} sum_i e_i F_i)              (e_i = 1 - c_i)
+///
+/// the same map as `lpf<m, gauss_interior>` (tests/schemes/test_lpf_fixed_point.cpp). The
+/// method is symplectic when e_i = 1 - c_i and mu_ji - mu_ij = e_i - e_j (the RKN conditions
+/// b_i (bbar_j - abar_ij) = b_j (bbar_i - abar_ji), bbar_i = b_i (1 - c_i)). Rounded
+/// independently, the stored coefficients miss them by an ulp, and the map then drifts off the
+/// symplectic manifold by the same amount every step. As in IRKGL16 (Antonana, Makazaga &
+/// Murua 2017) the coefficients are therefore stored so that these relations hold *exactly*:
+/// all of them are multiples of a common grid g = 2^k eps, c_i for c_i >= 1/2 rounded to it,
+/// c_{s+1-i} = 1 - c_i, e_i = 1 - c_i, mu_ij (i <= j) rounded and mu_ji = mu_ij + (e_i - e_j),
+/// every operation exact on the grid. Any tau b_i keeps the conditions, so tau b_i is simply
+/// rounded. The stage equations are solved by fixed-point iteration (no Jacobian, s force
+/// evaluations per iteration), iterated until the increments stop changing, so that no
+/// iteration error is left that depends smoothly on the state.
+
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "geomint/core/nodes.hpp"
+#include "geomint/core/quadrature.hpp"
+#include "geomint/mechanics/lagrangian.hpp"
+#include "geomint/schemes/step_skeleton.hpp"
+
+namespace geomint {
+namespace schemes::detail {
+
+/// The coefficients c, e = 1 - c, b and mu of the s-stage Gauss Nystrom collocation method,
+/// stored so that the symplecticity conditions hold exactly in T (see the top of the file).
+template <class T, int S>
+struct gauss_nystrom_coefficients {
+  std::array<T, S> c{}, e{}, b{};
+  std::array<std::array<T, S>, S> mu{};
+  /// The grid every c, e and mu is a multiple of.
+  T grid{};
+
+  static gauss_nystrom_coefficients make() {
+    using std::abs;
+    using std::round;
+    const auto rule = gauss_legendre_rule<S, T>();  // on [0, 1]: the stages and the weights b
+    gauss_nystrom_coefficients k;
+    std::array<std::array<T, S>, S> mu_exact{};
+    for (int i = 0; i < S; ++i) {
+      k.c[static_cast<std::size_t>(i)] = rule.points[static_cast<std::size_t>(i)];
+      k.b[static_cast<std::size_t>(i)] = rule.weights[static_cast<std::size_t>(i)];
+    }
+    // abar_ij = int_0^{c_i} (c_i - s) l_j(s) ds = c_i^2 int_0^1 (1 - u) l_j(c_i u) du, by the
+    // same S-point rule (the integrand has degree S <= 2S - 1).
+    T largest(1);
+    for (int i = 0; i < S; ++i)
+      for (int j = 0; j < S; ++j) {
+        const T ci = k.c[static_cast<std::size_t>(i)];
+        T sum(0);
+        for (int r = 0; r < S; ++r) {
+          const T u = rule.points[static_cast<std::size_t>(r)];
+          const T s = ci * u;
+          T l(1);
+          for (int a = 0; a < S; ++a)
+            if (a != j)
+              l *= (s - k.c[static_cast<std::size_t>(a)]) / (k.c[static_cast<std::size_t>(j)] - k.c[static_cast<std::size_t>(a)]);
+          sum += rule.weights[static_cast<std::size_t>(r)] * (T(1) - u) * l;
+        }
+        const T m = ci * ci * sum / k.b[static_cast<std::size_t>(j)];
+        mu_exact[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = m;
+        if (abs(m) > largest) largest = abs(m);
+      }
+    // The grid g = 2^k eps with 2^k >= every |value|: a multiple of g below 2^(k+1) in
+    // magnitude has at most `digits` significant bits, so sums and differences of them that
+    // stay below 2^(k+1) are exact.
+    T scale(1);
+    while (scale < largest) scale *= T(2);
+    k.grid = scale * std::numeric_limits<T>::epsilon();
+    auto on_grid = [&](const T& x) { return T(round(x / k.grid)) * k.grid; };
+    for (int i = 0; i < S; ++i) {
+      const int mirror = S - 1 - i;
+      if (i >= mirror) k.c[static_cast<std::size_t>(i)] = on_grid(k.c[static_cast<std::size_t>(i)]);
+    }
+    for (int i = 0; i < S; ++i) {
+      const int mirror = S - 1 - i;
+      if (i < mirror) k.c[static_cast<std::size_t>(i)] = T(1) - k.c[static_cast<std::size_t>(mirror)];
+    }
+    for (int i = 0; i < S; ++i) k.e[static_cast<std::size_t>(i)] = T(1) - k.c[static_cast<std::size_t>(i)];
+    for (int i = 0; i < S; ++i)
+      for (int j = i; j < S; ++j) {
+        const auto I = static_cast<std::size_t>(i), J = static_cast<std::size_t>(j);
+        k.mu[I][J] = on_grid(mu_exact[I][J]);
+        if (j != i) k.mu[J][I] = k.mu[I][J] + (k.e[I] - k.e[J]);
+      }
+    return k;
+  }
+};
+
+inline std::string lpf_fixed_point_name(int m) {
+  return "lpf-fixed-point(m=" + std::to_string(m) + ", gauss-interior, natural systems)";
+}
+
+/// What the engine remembers of its last step (as step_memory in step_skeleton.hpp): the
+/// stage increments, to predict the next step's by extrapolation.
+template <class T, int n, int S>
+struct fixed_point_memory {
+  std::atomic_flag busy;
+  bool valid = false;
+  T tau{};
+  vec<T, n> q1, p1;
+  std::array<vec<T, n>, S> F;
+  fixed_point_memory() = default;
+  fixed_point_memory(const fixed_point_memory&) : fixed_point_memory() {}
+  fixed_point_memory& operator=(const fixed_point_memory&) {
+    valid = false;
+    return *this;
+  }
+};
+
+/// The engine: one step (q, p) -> (q1, p1) of the Nystrom form above.
+template <class Sys, class T, int M>
+class lpf_fixed_point_engine {
+ public:
+  static constexpr int S = M - 1;
+  static constexpr int n = Sys::dof;
+  using V = vec<T, n>;
+  /// The unknowns: the stage momentum increments F_1..F_S.
+  using unknowns = vec<T, S * n>;
+
+  explicit lpf_fixed_point_engine(const Sys& sys)
+      : sys_(sys), k_(gauss_nystrom_coefficients<T, S>::make()), minv_(inverse_of<T, n>(Sys::template mass_matrix<T>())) {
+    // The next step's stage values of the previous step's force polynomial (degree S-1
+    // through the S stages), evaluated at 1 + c_i: the predictor of a continuing step.
+    for (int i = 0; i < S; ++i)
+      for (int j = 0; j < S; ++j) {
+        const T t = T(1) + k_.c[static_cast<std::size_t>(i)];
+        T l(1);
+        for (int a = 0; a < S; ++a)
+          if (a != j)
+            l *= (t - k_.c[static_cast<std::size_t>(a)]) / (k_.c[static_cast<std::size_t>(j)] - k_.c[static_cast<std::size_t>(a)]);
+        extrapolate_[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+            k_.b[static_cast<std::size_t>(i)] * l / k_.b[static_cast<std::size_t>(j)];
+      }
+  }
+
+  const gauss_nystrom_coefficients<T, S>& coefficients() const { return k_; }
+
+  /// (q_k, p_k) -> (q_{k+1}, p_{k+1}); `solution` (if not null) receives the stage increments;
+  /// `carry` selects compensated summation of the update (as step_skeleton::one_step). On
+  /// failure q1, p1 and carry are untouched. opt.max_iterations bounds the fixed-point
+  /// iterations.
+  step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt,
+                       unknowns* solution = nullptr, phase_carry<T, n>* carry = nullptr) const {
+    opt.validate();
+    try_lock_flag lock(memory_.busy);
+    fixed_point_memory<T, n, S>* mem = lock.owned() ? &memory_ : nullptr;
+    const V v = minv_ * p;
+    std::array<T, S> hb;
+    for (int i = 0; i < S; ++i) hb[static_cast<std::size_t>(i)] = tau * k_.b[static_cast<std::size_t>(i)];
+    std::array<V, S> F;
+    if (mem && mem->valid && tau == mem->tau && q == mem->q1 && p == mem->p1) {
+      for (int i = 0; i < S; ++i) {
+        V x = V::Zero();
+        for (int j = 0; j < S; ++j) x += extrapolate_[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * mem->F[static_cast<std::size_t>(j)];
+        F[static_cast<std::size_t>(i)] = x;
+      }
+    } else {
+      for (int i = 0; i < S; ++i)
+        F[static_cast<std::size_t>(i)] = hb[static_cast<std::size_t>(i)] * force(V(q + (tau * k_.c[static_cast<std::size_t>(i)]) * v));
+    }
+    step_status st = iterate(q, v, tau, hb, F, opt);
+    if (!st) {
+      if (mem) mem->valid = false;
+      return st;
+    }
+    V dp = V::Zero(), se = V::Zero();
+    for (int i = 0; i < S; ++i) {
+      dp += F[static_cast<std::size_t>(i)];
+      se += k_.e[static_cast<std::size_t>(i)] * F[static_cast<std::size_t>(i)];
+    }
+    const V dq = tau * V(v + minv_ * se);
+    phase_carry<T, n> carry_next;
+    if (carry) carry_next = *carry;
+    q1 = apply_end_update<T, n>(q, dq, true, carry ? &carry_next.q : nullptr);
+    p1 = apply_end_update<T, n>(p, dp, true, carry ? &carry_next.p : nullptr);
+    if (carry) *carry = carry_next;
+    if (solution)
+      for (int i = 0; i < S; ++i) solution->template segment<n>(i * n) = F[static_cast<std::size_t>(i)];
+    if (mem) {
+      mem->valid = true;
+      mem->tau = tau;
+      mem->q1 = q1;
+      mem->p1 = p1;
+      mem->F = F;
+    }
+    return st;
+  }
+
+ private:
+  /// f(x) = -grad V(x), one level of AD.
+  V force(const V& x) const {
+    using D = dual<T, n>;
+    vec<D, n> xd;
+    for (int i = 0; i < n; ++i) xd[i] = D::variable(x[i], i);
+    const D pot = Sys::template potential<D>(xd);
+    V f;
+    for (int i = 0; i < n; ++i) f[i] = -pot.d[static_cast<std::size_t>(i)];
+    return f;
+  }
+
+  /// F <- tau b_i f(Q_i(F)) until the increments stop changing: exactly (a fixed point in T),
+  /// or, once below eps^(2/3) relative, when the change has grown twice in a row (the
+  /// round-off floor). A non-finite iterate, two growths in a row above that level, or the
+  /// iteration budget spent above `tolerance_ulps` eps is a failure.
+  step_status iterate(const V& q, const V& v, const T& tau, const std::array<T, S>& hb, std::array<V, S>& F,
+                      const newton_options<T>& opt) const {
+    using std::abs;
+    using std::cbrt;
+    const T eps = std::numeric_limits<T>::epsilon();
+    const T floor_level = cbrt(eps * eps);
+    step_status st;
+    T previous = std::numeric_limits<T>::infinity();
+    int growth = 0;
+    for (int it = 1; it <= opt.max_iterations; ++it) {
+      st.iterations = it;
+      std::array<V, S> next;
+      T change(0), size(0);
+      for (int i = 0; i < S; ++i) {
+        V z = V::Zero();
+        for (int j = 0; j < S; ++j) z += k_.mu[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * F[static_cast<std::size_t>(j)];
+        const V Q = q + tau * V(k_.c[static_cast<std::size_t>(i)] * v + minv_ * z);
+        next[static_cast<std::size_t>(i)] = hb[static_cast<std::size_t>(i)] * force(Q);
+        if (!all_finite(next[static_cast<std::size_t>(i)])) {
+          st.reason = step_failure::non_finite_iterate;
+          return st;
+        }
+        for (int r = 0; r < n; ++r) {
+          const T d = abs(next[static_cast<std::size_t>(i)][r] - F[static_cast<std::size_t>(i)][r]);
+          if (d > change) change = d;
+          const T a = abs(next[static_cast<std::size_t>(i)][r]);
+          if (a > size) size = a;
+        }
+      }
+      F = next;
+      if (change == T(0)) return st;
+      const T scale = size + eps * q.template lpNorm<Eigen::Infinity>();
+      if (change >= previous) {
+        // Growing twice in a row: at the round-off floor the fixed point is reached; above it
+        // the map is no contraction (tau beyond the iteration's reach).
+        if (++growth >= 2) {
+          if (change > floor_level * scale) st.reason = step_failure::no_convergence;
+          return st;
+        }
+      } else {
+        growth = 0;
+      }
+      previous = change;
+      if (it == opt.max_iterations && change <= T(opt.tolerance_ulps) * eps * scale) return st;
+    }
+    st.reason = step_failure::no_convergence;
+    return st;
+  }
+
+  Sys sys_;
+  gauss_nystrom_coefficients<T, S> k_;
+  mat<T, n> minv_;
+  std::array<std::array<T, S>, S> extrapolate_{};
+  mutable fixed_point_memory<T, n, S> memory_;
+};
+
+}  // namespace schemes::detail
+
+/// LPF of degree m on Gauss-interior nodes for natural systems, in the fixed-point Nystrom form
+/// with exactly symplectic floating-point coefficients (see the top of this file):
+/// `integrator<lpf_fixed_point<8>, Sys, T>`.
+template <int M>
+struct lpf_fixed_point {
+  static_assert(M >= 2, "geomint::lpf_fixed_point: m must be >= 2 (at least one interior node)");
+  static_assert(M <= max_floating_m, "geomint::lpf_fixed_point: m must be <= max_floating_m (16)");
+  static constexpr int m = M;
+  static std::string name() { return schemes::detail::lpf_fixed_point_name(M); }
+
+  template <class Sys, class T>
+  struct engine : schemes::detail::lpf_fixed_point_engine<Sys, T, M> {
+    static_assert(natural_system<Sys>,
+                  "geomint::lpf_fixed_point: the fixed-point form needs a natural system (derived from "
+                  "geomint::natural, with a static potential and a constant mass matrix); use lpf<m, gauss_interior> "
+                  "for other Lagrangians");
+    explicit engine(const Sys& sys) : schemes::detail::lpf_fixed_point_engine<Sys, T, M>(sys) {}
+  };
+};
+
+}  // namespace geomint

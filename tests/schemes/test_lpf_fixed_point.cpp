@@ -1,0 +1,161 @@
+/// LPF on Gauss-interior nodes in the fixed-point Nystrom form (schemes/lpf_fixed_point.hpp).
+#include <cmath>
+
+#include "catch.hpp"
+#include "geomint/integrator.hpp"
+#include "geomint/mechanics/systems.hpp"
+#include "geomint/schemes/lpf_fixed_point.hpp"
+#include "scalar_types.hpp"
+
+using namespace geomint;
+using geomint::test::eps_tol;
+
+namespace {
+
+/// A binary float wide enough to hold every sum and difference of the stored coefficients of
+/// double and cpp_bin_float_50 exactly (they are multiples of a grid of at most 2^-165 below 4).
+using wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<400, boost::multiprecision::digit_base_2>>;
+
+/// The largest violation, in exact arithmetic, of the relations that make the stored method
+/// symplectic: e_i = 1 - c_i and mu_ji - mu_ij = e_i - e_j.
+template <class K>
+wide symplecticity_violation(const K& k, int S) {
+  using std::abs;
+  wide worst(0);
+  for (int i = 0; i < S; ++i) {
+    const auto I = static_cast<std::size_t>(i);
+    const wide d = abs(wide(k.e[I]) - (wide(1) - wide(k.c[I])));
+    if (d > worst) worst = d;
+    for (int j = 0; j < S; ++j) {
+      const auto J = static_cast<std::size_t>(j);
+      const wide r = abs((wide(k.mu[J][I]) - wide(k.mu[I][J])) - (wide(k.e[I]) - wide(k.e[J])));
+      if (r > worst) worst = r;
+    }
+  }
+  return worst;
+}
+
+/// Kepler (e = 1/2) from the pericentre.
+template <class T>
+std::pair<vec<T, 2>, vec<T, 2>> kepler_start() {
+  using std::sqrt;
+  const T e = T(1) / T(2);
+  return {vec<T, 2>(T(1) - e, T(0)), vec<T, 2>(T(0), T(sqrt((T(1) + e) / (T(1) - e))))};
+}
+
+template <int M, class T>
+void check_coefficients() {
+  constexpr int S = M - 1;
+  using std::abs;
+  const auto k = schemes::detail::gauss_nystrom_coefficients<T, S>::make();
+  // Exact mathematics: the stored relations hold with no rounding at all.
+  CHECK(symplecticity_violation(k, S) == wide(0));
+  // A second computation in 400 bits: each stored value is the exact one rounded to the grid
+  // (within one grid unit; the grid is a power-of-two multiple of T's epsilon, at most 2^4).
+  const auto w = schemes::detail::gauss_nystrom_coefficients<wide, S>::make();
+  CHECK(wide(k.grid) <= wide(16) * wide(std::numeric_limits<T>::epsilon()));
+  for (int i = 0; i < S; ++i) {
+    const auto I = static_cast<std::size_t>(i);
+    CHECK(abs(wide(k.c[I]) - w.c[I]) <= wide(k.grid));
+    CHECK(abs(wide(k.b[I]) - w.b[I]) <= wide(4) * wide(std::numeric_limits<T>::epsilon()));
+    for (int j = 0; j < S; ++j) {
+      const auto J = static_cast<std::size_t>(j);
+      CHECK(abs(wide(k.mu[I][J]) - w.mu[I][J]) <= wide(2) * wide(k.grid));
+    }
+  }
+}
+
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: coefficients exactly symplectic in the scalar", "[lpf_fixed_point]",
+                        geomint::test::integrator_scalar_types) {
+  check_coefficients<2, TestType>();
+  check_coefficients<4, TestType>();
+  check_coefficients<8, TestType>();
+  check_coefficients<16, TestType>();
+}
+
+TEST_CASE("lpf_fixed_point: independently rounded coefficients are not exactly symplectic", "[lpf_fixed_point]") {
+  // The check above can fail: the 400-bit coefficients of m = 8 rounded to double one by one
+  // (what the Newton form's weights amount to) violate the relations by about an ulp.
+  constexpr int S = 7;
+  const auto w = schemes::detail::gauss_nystrom_coefficients<wide, S>::make();
+  schemes::detail::gauss_nystrom_coefficients<double, S> rounded;
+  for (std::size_t i = 0; i < S; ++i) {
+    rounded.c[i] = static_cast<double>(w.c[i]);
+    rounded.e[i] = static_cast<double>(wide(1) - w.c[i]);
+    for (std::size_t j = 0; j < S; ++j) rounded.mu[i][j] = static_cast<double>(w.mu[i][j]);
+  }
+  const wide v = symplecticity_violation(rounded, S);
+  CHECK(v > wide(0));
+  CHECK(v <= wide(4) * wide(std::numeric_limits<double>::epsilon()));
+}
+
+TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the same map as lpf<m, gauss_interior>", "[lpf_fixed_point]",
+                        geomint::test::integrator_scalar_types) {
+  // Second method: the Newton form of the same equations (lpf.hpp, eq. 12). Ten steps of
+  // Kepler (e = 1/2) from the pericentre, tau = 1/20: both solve the collocation equations
+  // to round-off, so they agree to a small multiple of eps per step (the stage equations'
+  // condition and the end update's sums; measured: at most 30 eps over the ten steps).
+  using T = TestType;
+  const T tau = T(1) / T(20);
+  const auto [q0, v0] = kepler_start<T>();
+  auto compare = [&]<int M>() {
+    integrator<lpf_fixed_point<M>, systems::kepler, T> A(systems::kepler{}, tau);
+    integrator<lpf<M, gauss_interior>, systems::kepler, T> B(systems::kepler{}, tau);
+    auto a = A.initial_state(q0, v0);
+    auto b = B.initial_state(q0, v0);
+    A.advance(a, 10);
+    B.advance(b, 10);
+    INFO("m = " << M << ": |q_a - q_b| = " << (a.q - b.q).norm() << ", |p_a - p_b| = " << (a.p - b.p).norm());
+    CHECK((a.q - b.q).template lpNorm<Eigen::Infinity>() <= eps_tol<T>(200));
+    CHECK((a.p - b.p).template lpNorm<Eigen::Infinity>() <= eps_tol<T>(200));
+    CHECK(a.step == 10);
+  };
+  compare.template operator()<2>();
+  compare.template operator()<4>();
+  compare.template operator()<8>();
+  compare.template operator()<12>();
+}
+
+TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: continuing steps and fresh steps solve the same equations",
+                        "[lpf_fixed_point]", geomint::test::integrator_scalar_types) {
+  // The step memory predicts a continuing step by extrapolating the previous stage forces; a
+  // fresh engine starts from the forces along the straight line. Both iterate to the fixed
+  // point, so the results agree to round-off (exact mathematics: the same fixed point).
+  using T = TestType;
+  const T tau = T(1) / T(10);
+  integrator<lpf_fixed_point<6>, systems::pendulum, T> I(systems::pendulum{}, tau);
+  auto s = I.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
+  auto fresh = s;
+  for (int k = 0; k < 20; ++k) {
+    I.step(s);
+    integrator<lpf_fixed_point<6>, systems::pendulum, T> J(systems::pendulum{}, tau);
+    J.step(fresh);
+  }
+  CHECK(abs(T(s.q[0] - fresh.q[0])) <= eps_tol<T>(64));
+  CHECK(abs(T(s.p[0] - fresh.p[0])) <= eps_tol<T>(64));
+}
+
+TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: a step beyond the iteration's reach fails and leaves the state",
+                        "[lpf_fixed_point][errors]", geomint::test::integrator_scalar_types) {
+  // The pendulum from theta = 1 with tau = 20 (three periods in one step): the fixed-point map
+  // is no contraction there, so the iteration must report failure, not return a step.
+  using T = TestType;
+  integrator<lpf_fixed_point<8>, systems::pendulum, T> I(systems::pendulum{}, T(20));
+  auto s = I.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
+  const auto before = s;
+  const step_status st = I.try_step(s);
+  CHECK(!st);
+  CHECK((st.reason == step_failure::no_convergence || st.reason == step_failure::non_finite_iterate));
+  CHECK(st.step == 0);
+  CHECK(s.q == before.q);
+  CHECK(s.p == before.p);
+  CHECK(s.step == before.step);
+  // The iteration budget is honoured: with one iteration allowed, a step that needs more fails.
+  const auto [q0, v0] = kepler_start<T>();
+  integrator<lpf_fixed_point<8>, systems::kepler, T> K(systems::kepler{}, T(1) / T(10));
+  K.options().max_iterations = 1;
+  auto s1 = K.initial_state(q0, v0);
+  CHECK(K.try_step(s1).reason == step_failure::no_convergence);
+}
