@@ -112,6 +112,14 @@ static_assert(D1_uneven[1][0] == rational(-2) && D1_uneven[1][1] == rational(3, 
 static_assert(D1_uneven[2][0] == rational(2) && D1_uneven[2][1] == rational(-9, 2) && D1_uneven[2][2] == rational(5, 2));
 constexpr auto B1_uneven = geomint::differentiation_weights_at<1, geomint::bernstein>(uneven_nodes);
 static_assert(B1_uneven[1][0] == rational(-4, 3) && B1_uneven[1][1] == rational(2, 3) && B1_uneven[1][2] == rational(2, 3));
+/// lagrange_values_at on the same nodes, from the l_j above: at 1/2 (-1/4, 9/8, 1/8), at 2
+/// (outside the nodes: 5, -9, 5), at the node 1/3 exactly (0, 1, 0).
+constexpr auto l_half = geomint::lagrange_values_at(uneven_nodes, rational(1, 2));
+static_assert(l_half[0] == rational(-1, 4) && l_half[1] == rational(9, 8) && l_half[2] == rational(1, 8));
+constexpr auto l_two = geomint::lagrange_values_at(uneven_nodes, rational(2));
+static_assert(l_two[0] == rational(5) && l_two[1] == rational(-9) && l_two[2] == rational(5));
+constexpr auto l_node = geomint::lagrange_values_at(uneven_nodes, rational(1, 3));
+static_assert(l_node[0] == rational(0) && l_node[1] == rational(1) && l_node[2] == rational(0));
 
 // ---------------------------------------------------------------- identities for m = 1..max_exact_m
 /// sum_a l_a = 1 and sum_a c_a^k l_a(t) = t^k as polynomials, k <= m (polynomial reproduction).

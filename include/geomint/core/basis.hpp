@@ -97,6 +97,14 @@ constexpr std::array<T, N> lagrange_values_at(const std::array<T, N>& c, const T
 }
 }  // namespace core::detail
 
+/// l_j(t), j = 0..N-1, for the Lagrange polynomials on any N distinct nodes c (not only a
+/// family's), at any t: the barycentric formula above, for code that holds its own nodes
+/// (e.g. the Gauss stages of schemes/lpf_fixed_point.hpp).
+template <class T, std::size_t N>
+constexpr std::array<T, N> lagrange_values_at(const std::array<T, N>& c, const T& t) {
+  return core::detail::lagrange_values_at(c, t);
+}
+
 /// Lagrange basis l_a(t) = prod_{b != a} (t - c_b) / (c_a - c_b) on a node family (eq. 8).
 template <class Family, int M, class T = double>
 constexpr basis_polynomials<T, M> lagrange_basis() {

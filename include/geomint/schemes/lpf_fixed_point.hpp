@@ -32,6 +32,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "geomint/core/basis.hpp"
 #include "geomint/core/nodes.hpp"
 #include "geomint/core/quadrature.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
@@ -62,23 +63,22 @@ struct gauss_nystrom_coefficients {
     // abar_ij = int_0^{c_i} (c_i - s) l_j(s) ds = c_i^2 int_0^1 (1 - u) l_j(c_i u) du, by the
     // same S-point rule (the integrand has degree S <= 2S - 1).
     T largest(1);
-    for (int i = 0; i < S; ++i)
+    for (int i = 0; i < S; ++i) {
+      const T ci = k.c[static_cast<std::size_t>(i)];
+      std::array<T, S> sum{};
+      sum.fill(T(0));
+      for (int r = 0; r < S; ++r) {
+        const T u = rule.points[static_cast<std::size_t>(r)];
+        const auto l = lagrange_values_at(k.c, T(ci * u));
+        const T w = rule.weights[static_cast<std::size_t>(r)] * (T(1) - u);
+        for (int j = 0; j < S; ++j) sum[static_cast<std::size_t>(j)] += w * l[static_cast<std::size_t>(j)];
+      }
       for (int j = 0; j < S; ++j) {
-        const T ci = k.c[static_cast<std::size_t>(i)];
-        T sum(0);
-        for (int r = 0; r < S; ++r) {
-          const T u = rule.points[static_cast<std::size_t>(r)];
-          const T s = ci * u;
-          T l(1);
-          for (int a = 0; a < S; ++a)
-            if (a != j)
-              l *= (s - k.c[static_cast<std::size_t>(a)]) / (k.c[static_cast<std::size_t>(j)] - k.c[static_cast<std::size_t>(a)]);
-          sum += rule.weights[static_cast<std::size_t>(r)] * (T(1) - u) * l;
-        }
-        const T m = ci * ci * sum / k.b[static_cast<std::size_t>(j)];
+        const T m = ci * ci * sum[static_cast<std::size_t>(j)] / k.b[static_cast<std::size_t>(j)];
         mu_exact[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = m;
         if (abs(m) > largest) largest = abs(m);
       }
+    }
     // The grid g = 2^k eps with 2^k >= every |value|: a multiple of g below 2^(k+1) in
     // magnitude has at most `digits` significant bits, so sums and differences of them that
     // stay below 2^(k+1) are exact.
@@ -140,16 +140,12 @@ class lpf_fixed_point_engine {
       : sys_(sys), k_(gauss_nystrom_coefficients<T, S>::make()), minv_(inverse_of<T, n>(Sys::template mass_matrix<T>())) {
     // The next step's stage values of the previous step's force polynomial (degree S-1
     // through the S stages), evaluated at 1 + c_i: the predictor of a continuing step.
-    for (int i = 0; i < S; ++i)
-      for (int j = 0; j < S; ++j) {
-        const T t = T(1) + k_.c[static_cast<std::size_t>(i)];
-        T l(1);
-        for (int a = 0; a < S; ++a)
-          if (a != j)
-            l *= (t - k_.c[static_cast<std::size_t>(a)]) / (k_.c[static_cast<std::size_t>(j)] - k_.c[static_cast<std::size_t>(a)]);
+    for (int i = 0; i < S; ++i) {
+      const auto l = lagrange_values_at(k_.c, T(T(1) + k_.c[static_cast<std::size_t>(i)]));
+      for (int j = 0; j < S; ++j)
         extrapolate_[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
-            k_.b[static_cast<std::size_t>(i)] * l / k_.b[static_cast<std::size_t>(j)];
-      }
+            k_.b[static_cast<std::size_t>(i)] * l[static_cast<std::size_t>(j)] / k_.b[static_cast<std::size_t>(j)];
+    }
   }
 
   const gauss_nystrom_coefficients<T, S>& coefficients() const { return k_; }
