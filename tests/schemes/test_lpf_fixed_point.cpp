@@ -13,8 +13,9 @@ using geomint::test::eps_tol;
 namespace {
 
 /// A binary float wide enough to hold every sum and difference of the stored coefficients of
-/// double and cpp_bin_float_50 exactly (they are multiples of a grid of at most 2^-165 below 4).
-using wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<400, boost::multiprecision::digit_base_2>>;
+/// double and cpp_bin_float_50 exactly: they are multiples of a grid of at least 2^-167 below 4,
+/// so at most 170 significant bits, and cpp_bin_float_100 has 333.
+using wide = geomint::test::cpp_bin_float_100;
 
 /// The largest violation, in exact arithmetic, of the relations that make the stored method
 /// symplectic: e_i = 1 - c_i and mu_ji - mu_ij = e_i - e_j.
@@ -48,9 +49,10 @@ void check_coefficients() {
   constexpr int S = M - 1;
   using std::abs;
   const auto k = schemes::detail::gauss_nystrom_coefficients<T, S>::make();
-  // Exact mathematics: the stored relations hold with no rounding at all.
+  // Exact mathematics: the stored relations hold with no rounding at all (checked in `wide`,
+  // where every difference of them is exact).
   CHECK(symplecticity_violation(k, S) == wide(0));
-  // A second computation in 400 bits: each stored value is the exact one rounded to the grid
+  // A second computation in 100 digits: each stored value is the exact one rounded to the grid
   // (within one grid unit; the grid is a power-of-two multiple of T's epsilon, at most 2^4).
   const auto w = schemes::detail::gauss_nystrom_coefficients<wide, S>::make();
   CHECK(wide(k.grid) <= wide(16) * wide(std::numeric_limits<T>::epsilon()));
@@ -76,7 +78,7 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: coefficients exactly symplectic in the
 }
 
 TEST_CASE("lpf_fixed_point: independently rounded coefficients are not exactly symplectic", "[lpf_fixed_point]") {
-  // The check above can fail: the 400-bit coefficients of m = 8 rounded to double one by one
+  // The check above can fail: the 100-digit coefficients of m = 8 rounded to double one by one
   // (what the Newton form's weights amount to) violate the relations by about an ulp.
   constexpr int S = 7;
   const auto w = schemes::detail::gauss_nystrom_coefficients<wide, S>::make();
