@@ -21,7 +21,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-FLOOR = 1e-17  # plotting floor for exact zeros
+# Plotting floor for exact zeros only (a log axis cannot show 0): below the regime's round-off.
+FLOOR = {"double": 1e-17, "cpp_bin_float_50": 1e-52}
 
 
 def read(path):
@@ -35,13 +36,17 @@ def read(path):
     for r in csv.DictReader(data):
         s = series.setdefault(r["method"], {"cpu": [], "err": [], "dE": []})
         s["cpu"].append(float(r["cpu_seconds"]))
-        s["err"].append(max(float(r["final_error"]), FLOOR))
-        s["dE"].append(max(float(r["max_energy_error"]), FLOOR))
+        s["err"].append(float(r["final_error"]))
+        s["dE"].append(float(r["max_energy_error"]))
     system, scalar = "unknown", "double"
     for n in notes:
         m = re.match(r"summary \((\w+), ([\w]+)", n)
         if m:
             system, scalar = m.group(1), m.group(2)
+    floor = FLOOR.get(scalar, 1e-17)
+    for s in series.values():
+        for key in ("err", "dE"):
+            s[key] = [v if v > 0 else floor for v in s[key]]
     return series, notes, system, scalar
 
 
