@@ -109,21 +109,11 @@ inline std::string lpf_fixed_point_name(int m) {
   return "lpf-fixed-point(m=" + std::to_string(m) + ", gauss-interior, natural systems)";
 }
 
-/// What the engine remembers of its last step (as step_memory in step_skeleton.hpp): the
-/// stage increments, to predict the next step's by extrapolation.
+/// What the engine remembers of its last step (step_continuation, step_skeleton.hpp): the stage
+/// increments, to predict the next step's by extrapolation.
 template <class T, int n, int S>
-struct fixed_point_memory {
-  std::atomic_flag busy;
-  bool valid = false;
-  T tau{};
-  vec<T, n> q1, p1;
+struct fixed_point_memory : step_continuation<T, n> {
   std::array<vec<T, n>, S> F;
-  fixed_point_memory() = default;
-  fixed_point_memory(const fixed_point_memory&) : fixed_point_memory() {}
-  fixed_point_memory& operator=(const fixed_point_memory&) {
-    valid = false;
-    return *this;
-  }
 };
 
 /// The engine: one step (q, p) -> (q1, p1) of the Nystrom form above.
@@ -163,7 +153,7 @@ class lpf_fixed_point_engine {
     std::array<T, S> hb;
     for (int i = 0; i < S; ++i) hb[static_cast<std::size_t>(i)] = tau * k_.b[static_cast<std::size_t>(i)];
     std::array<V, S> F;
-    if (mem && mem->valid && tau == mem->tau && q == mem->q1 && p == mem->p1) {
+    if (mem && mem->continues(q, p, tau)) {
       for (int i = 0; i < S; ++i) {
         V x = V::Zero();
         for (int j = 0; j < S; ++j) x += extrapolate_[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * mem->F[static_cast<std::size_t>(j)];
@@ -192,10 +182,7 @@ class lpf_fixed_point_engine {
     if (solution)
       for (int i = 0; i < S; ++i) solution->template segment<n>(i * n) = F[static_cast<std::size_t>(i)];
     if (mem) {
-      mem->valid = true;
-      mem->tau = tau;
-      mem->q1 = q1;
-      mem->p1 = p1;
+      mem->record(tau, q1, p1);
       mem->F = F;
     }
     return st;

@@ -208,23 +208,46 @@ class try_lock_flag {
   bool owned_;
 };
 
-/// What the skeleton remembers of its last step, to start the next one well when it continues
-/// from where the last one ended (same q, p and tau): the solution, to extrapolate as the
-/// predictor, and the factorised Newton matrix, to reuse. Guarded by a try-lock: a call that
-/// finds it busy (the same engine used from another thread) simply does not use it. A copy
-/// starts empty.
-template <class T, int n, int N>
-struct step_memory {
+/// Where an engine's last step ended (q1, p1 with step tau), to recognise a step that continues
+/// it. Guarded by a try-lock (`busy`): a call that finds it busy (the same engine used from
+/// another thread) simply does not use it. A copy starts empty. Engines derive from it and add
+/// what they carry over (step_memory below, schemes/lpf_fixed_point.hpp).
+template <class T, int n>
+struct step_continuation {
   std::atomic_flag busy;  // clear on construction (C++20)
   bool valid = false;
   T tau{};
   vec<T, n> q1, p1;
+  step_continuation() = default;
+  step_continuation(const step_continuation&) : step_continuation() {}
+  step_continuation& operator=(const step_continuation&) {
+    valid = false;
+    return *this;
+  }
+  /// Whether a step from (q, p) with tau starts where the remembered one ended.
+  bool continues(const vec<T, n>& q, const vec<T, n>& p, const T& step) const {
+    return valid && step == tau && q == q1 && p == p1;
+  }
+  /// Remembers the end of a successful step.
+  void record(const T& step, const vec<T, n>& q_end, const vec<T, n>& p_end) {
+    valid = true;
+    tau = step;
+    q1 = q_end;
+    p1 = p_end;
+  }
+};
+
+/// What the skeleton remembers of its last step, to start the next one well when it continues
+/// from where the last one ended (same q, p and tau): the solution, to extrapolate as the
+/// predictor, and the factorised Newton matrix, to reuse.
+template <class T, int n, int N>
+struct step_memory : step_continuation<T, n> {
   vec<T, N> z;
   jacobian_cache<T, N> jacobian;
   step_memory() = default;
   step_memory(const step_memory&) : step_memory() {}
   step_memory& operator=(const step_memory&) {
-    valid = false;
+    this->valid = false;
     jacobian.valid = false;
     return *this;
   }
@@ -262,7 +285,7 @@ class step_skeleton {
     unknowns z;
     step_status st;
     bool done = false;
-    if (mem && mem->valid && tau == mem->tau && q == mem->q1 && p == mem->p1) {
+    if (mem && mem->continues(q, p, tau)) {
       z = mem->z;
       method_.extrapolate(mem->z, z);
       st = solve(q, p, tau, opt, z, &mem->jacobian);
@@ -292,10 +315,7 @@ class step_skeleton {
     if (carry) *carry = carry_next;
     if (solution) *solution = z;
     if (mem) {
-      mem->valid = true;
-      mem->tau = tau;
-      mem->q1 = q1;
-      mem->p1 = p1;
+      mem->record(tau, q1, p1);
       mem->z = z;
       // Reuse the matrix next step only while it contracts fast enough to reach eps from O(1)
       // in six corrections (rate^6 <= eps: about 2e-3 in double, 5e-9 in 50 digits);
