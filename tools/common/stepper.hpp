@@ -190,6 +190,39 @@ struct high_m_scheme_set {
   }
 };
 
+/// The fixed-point form of LPF on Gauss-interior nodes (geomint/schemes/lpf_fixed_point.hpp: the
+/// same map as `lpf --nodes gauss-interior` on a natural system, solved without a Jacobian, its
+/// coefficients exactly symplectic in the scalar): `--scheme lpf-fixed-point`, m = 2..16, on the
+/// built-in natural systems, in 16 and 50 digits. It has no --nodes or --basis. Compiled in the
+/// same units as high_m_scheme_set (stepper_tu.cpp, GEOMINT_STEPPER_HIGH_M).
+template <class Sys, class T>
+struct fixed_point_scheme_set {
+  static constexpr std::string_view scheme = "lpf-fixed-point";
+  static constexpr int min_m = 2;
+  static constexpr int max_m = 16;
+  static constexpr bool compiled =
+      natural_system<Sys> && !is_zoo_system<Sys> && std::numeric_limits<T>::digits10 <= 50;
+  static constexpr const char* describe =
+      "--scheme lpf-fixed-point is compiled for m = 2..16 on the natural built-in systems (harmonic, pendulum, "
+      "kepler), in 16 and 50 digits";
+  static bool applies(const scheme_spec& spec) { return spec.scheme == scheme; }
+  /// Throws std::invalid_argument with a clear message unless `spec` is in the set.
+  static void check(const scheme_spec& spec) {
+    if (spec.m < min_m || spec.m > max_m)
+      throw std::invalid_argument("m = " + std::to_string(spec.m) + ": " + describe);
+    if constexpr (!natural_system<Sys>)
+      throw std::invalid_argument("--system " + std::string(Sys::name) +
+                                  " is not a natural system (L = qdot^T M qdot / 2 - V(q)): " + describe);
+    if (!compiled)
+      throw std::invalid_argument("not compiled in " + std::to_string(digits_of<T>()) + " digits: " + describe);
+  }
+};
+
+/// The stepper of a natural built-in system for a spec in fixed_point_scheme_set (defined in
+/// stepper_tu.cpp for T = double and cpp_bin_float_50).
+template <class Sys, class T>
+std::unique_ptr<any_stepper<T>> make_fixed_point_stepper(const scheme_spec& spec);
+
 /// The stepper of a built-in system for a spec in high_m_scheme_set (defined in stepper_tu.cpp
 /// for T = double and cpp_bin_float_50).
 template <class Sys, class T>
@@ -202,14 +235,16 @@ template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec);
 
 /// Throws std::invalid_argument if the free system called `system` has no stepper for `spec` in
-/// the scalar T: an unknown system, a zoo system outside its restricted scheme set, or a degree
-/// above 8 outside high_m_scheme_set. (The built-in systems' other specs are checked by the
+/// the scalar T: an unknown system, a zoo system outside its restricted scheme set, the
+/// fixed-point form outside fixed_point_scheme_set, or a degree above 8 outside high_m_scheme_set. (The built-in systems' other specs are checked by the
 /// library's factory.)
 template <class T>
 void check_scheme(std::string_view system, const scheme_spec& spec) {
   with_free_system(system, [&]<class Sys>() {
     if constexpr (is_zoo_system<Sys>)
       zoo_scheme_set<Sys, T>::check(spec);
+    else if (fixed_point_scheme_set<Sys, T>::applies(spec))
+      fixed_point_scheme_set<Sys, T>::check(spec);
     else if (high_m_scheme_set<T>::applies(spec))
       high_m_scheme_set<T>::check(spec);
   });
@@ -224,6 +259,10 @@ std::unique_ptr<any_stepper<T>> make_stepper(std::string_view system, const sche
       zoo_scheme_set<Sys, T>::check(spec);  // before the factory, which may be a stub
       if constexpr (!zoo_scheme_set<Sys, T>::compiled) return nullptr;  // (check has thrown)
       else return make_system_stepper<Sys, T>(spec);
+    } else if (fixed_point_scheme_set<Sys, T>::applies(spec)) {
+      fixed_point_scheme_set<Sys, T>::check(spec);
+      if constexpr (!fixed_point_scheme_set<Sys, T>::compiled) return nullptr;  // (check has thrown)
+      else return make_fixed_point_stepper<Sys, T>(spec);
     } else if (high_m_scheme_set<T>::applies(spec)) {
       high_m_scheme_set<T>::check(spec);
       if constexpr (!high_m_scheme_set<T>::compiled) return nullptr;  // (check has thrown)

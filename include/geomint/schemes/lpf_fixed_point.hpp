@@ -113,7 +113,13 @@ inline std::string lpf_fixed_point_name(int m) {
 /// increments, to predict the next step's by extrapolation.
 template <class T, int n, int S>
 struct fixed_point_memory : step_continuation<T, n> {
-  std::array<vec<T, n>, S> F;
+  /// Zero until a step records its own: an engine is copied into a stepper before its first
+  /// step, and the copy reads every member.
+  std::array<vec<T, n>, S> F = [] {
+    std::array<vec<T, n>, S> zero;
+    zero.fill(vec<T, n>::Zero());
+    return zero;
+  }();
 };
 
 /// The engine: one step (q, p) -> (q1, p1) of the Nystrom form above.
