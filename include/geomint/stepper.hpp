@@ -10,7 +10,8 @@
 /// `make_stepper<Sys, T>` instantiates every scheme a spec can name for one (Sys, T): LPF for
 /// m = 2..8 on the four node families and both bases, Galerkin for m = 2..8, midpoint and
 /// trapezoidal: 65 schemes over 23 engines (the node families of one LPF method share its
-/// engine, `engine_stepper`). That is some 30 s of GCC 12 CPU time per (Sys, T) (the 12 units of
+/// engine, `engine_stepper`); on a natural system also LPF's fixed-point form for m = 2..8
+/// (`lpf-fixed-point`, schemes/lpf_fixed_point.hpp: 7 more engines). That is some 30 s of GCC 12 CPU time per (Sys, T) (the 12 units of
 /// tools/common: 28-34 s each, docs/results/ci.md), so a program instantiates it once per
 /// (Sys, T): `extern template` where it is used, `template` in one source file (as
 /// tools/common/stepper_tu.cpp does).
@@ -24,26 +25,33 @@
 
 #include "geomint/core/dispatch.hpp"
 #include "geomint/integrator.hpp"
+#include "geomint/schemes/lpf_fixed_point.hpp"
 #include "geomint/solvers/phase_state.hpp"
 
 namespace geomint {
 
 /// The schemes a stepper can be made of, and the range of m it accepts.
-inline constexpr std::array<std::string_view, 4> scheme_names = {"lpf", "midpoint", "trapezoidal", "galerkin"};
+inline constexpr std::array<std::string_view, 5> scheme_names = {"lpf", "lpf-fixed-point", "midpoint", "trapezoidal",
+                                                                  "galerkin"};
 inline constexpr int stepper_min_m = 2;
 inline constexpr int stepper_max_m = 8;
+/// Why lpf-fixed-point has no stepper on a system that is not natural.
+inline constexpr std::string_view fixed_point_natural_only =
+    "lpf-fixed-point needs a natural system (L = qdot^T M qdot / 2 - V(q), mechanics/lagrangian.hpp)";
 
-/// A scheme chosen by name: `nodes` and `basis` apply to lpf only, `m` to lpf and galerkin.
-/// Node families are accepted under either spelling (core/dispatch.hpp).
+/// A scheme chosen by name: `nodes` and `basis` apply to lpf only (lpf-fixed-point is on
+/// Gauss-interior nodes), `m` to lpf, lpf-fixed-point and galerkin. Node families are accepted
+/// under either spelling (core/dispatch.hpp).
 struct scheme_spec {
   std::string scheme = "lpf";
   std::string nodes = "equispaced";
   std::string basis = "lagrange";
   int m = 2;
   /// Whether the scheme has an m (midpoint and trapezoidal have none).
-  bool has_m() const { return scheme == "lpf" || scheme == "galerkin"; }
+  bool has_m() const { return scheme == "lpf" || scheme == "lpf-fixed-point" || scheme == "galerkin"; }
   /// The node family column of tables: the printed family name, or "-" where it does not apply.
   std::string nodes_label() const {
+    if (scheme == "lpf-fixed-point") return std::string(gauss_interior::name);
     if (scheme != "lpf") return "-";
     const auto family = canonical_node_family(nodes);
     return family ? std::string(*family) : nodes;
@@ -197,7 +205,8 @@ std::unique_ptr<any_stepper<T>> make_scheme_stepper(const Sys& sys = Sys{}) {
 }
 
 /// The stepper named by `spec` on `sys`; std::invalid_argument for an unknown scheme, node
-/// family or basis, or m outside stepper_min_m..stepper_max_m.
+/// family or basis, m outside stepper_min_m..stepper_max_m, or lpf-fixed-point on a system that
+/// is not natural.
 template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_stepper(const scheme_spec& spec, const Sys& sys = Sys{}) {
   auto make = [&]<class Scheme>() -> std::unique_ptr<any_stepper<T>> { return make_scheme_stepper<Scheme, Sys, T>(sys); };
@@ -211,13 +220,19 @@ std::unique_ptr<any_stepper<T>> make_stepper(const scheme_spec& spec, const Sys&
   if (spec.scheme == "midpoint") return make.template operator()<midpoint_vi>();
   if (spec.scheme == "trapezoidal") return make.template operator()<trapezoidal_vi>();
   if (spec.scheme == "galerkin") return with_m([&]<int M>() { return make.template operator()<galerkin_vi<M>>(); });
+  if (spec.scheme == "lpf-fixed-point") {
+    if constexpr (natural_system<Sys>)
+      return with_m([&]<int M>() { return make.template operator()<lpf_fixed_point<M>>(); });
+    else
+      throw std::invalid_argument(std::string(fixed_point_natural_only));
+  }
   if (spec.scheme == "lpf")
     return with_m([&]<int M>() {
       return with_node_family(spec.nodes, [&]<class Family>() {
         return with_basis(spec.basis, [&]<class Basis>() { return make.template operator()<lpf<M, Family, Basis>>(); });
       });
     });
-  throw std::invalid_argument("unknown scheme '" + spec.scheme + "' (lpf|midpoint|trapezoidal|galerkin)");
+  throw std::invalid_argument("unknown scheme '" + spec.scheme + "' (lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin)");
 }
 
 }  // namespace geomint

@@ -44,6 +44,11 @@ TEST_CASE("stepper: a scheme chosen by name steps exactly like the typed integra
   CHECK(by_name({"midpoint", "equispaced", "lagrange", 2}) == typed_step<midpoint_vi>(q0, qdot0, tau));
   CHECK(make_stepper<systems::kepler, double>({"lpf", "chebyshev_lobatto", "lagrange", 6})->name() ==
         lpf<6, chebyshev_lobatto>::name());
+  // LPF's fixed-point form (Kepler is a natural system); --nodes and --basis do not apply.
+  CHECK(by_name({"lpf-fixed-point", "equispaced", "lagrange", 4}) == typed_step<lpf_fixed_point<4>>(q0, qdot0, tau));
+  CHECK(by_name({"lpf-fixed-point", "equispaced", "lagrange", 8}) == typed_step<lpf_fixed_point<8>>(q0, qdot0, tau));
+  CHECK(make_stepper<systems::kepler, double>({"lpf-fixed-point", "equispaced", "lagrange", 8})->name() ==
+        lpf_fixed_point<8>::name());
   // The node families of one LPF method share one engine type (compiled once); each stepper
   // keeps its own family's weights: the steps differ and each equals its typed integrator.
   static_assert(std::is_same_v<detail::stepper_engine_t<lpf<4, gauss_interior>, systems::kepler, double>,
@@ -61,6 +66,7 @@ TEST_CASE("stepper: unknown names and m out of range are errors; a failed step l
   CHECK_THROWS_AS((make_stepper<S, double>({"lpf", "equispaced", "hermite", 2})), std::invalid_argument);
   CHECK_THROWS_AS((make_stepper<S, double>({"lpf", "equispaced", "lagrange", 1})), std::invalid_argument);
   CHECK_THROWS_AS((make_stepper<S, double>({"galerkin", "equispaced", "lagrange", 9})), std::invalid_argument);
+  CHECK_THROWS_AS((make_stepper<S, double>({"lpf-fixed-point", "equispaced", "lagrange", 9})), std::invalid_argument);
 
   const auto stepper = make_stepper<S, double>({"lpf", "equispaced", "lagrange", 3});
   const dynamic_vector<double> q = dynamic_vector<double>::Constant(2, 1.0), p = dynamic_vector<double>::Zero(2);

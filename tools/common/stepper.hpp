@@ -96,6 +96,17 @@ inline const std::vector<std::string>& scheme_list() {
   static const std::vector<std::string> names(scheme_names.begin(), scheme_names.end());
   return names;
 }
+/// The schemes of every system: scheme_list but lpf-fixed-point (natural systems only), what
+/// the studies' `--scheme all` means.
+inline const std::vector<std::string>& schemes_of_every_system() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const std::string& s : scheme_list())
+      if (s != "lpf-fixed-point") out.push_back(s);
+    return out;
+  }();
+  return names;
+}
 
 /// The zoo's restricted scheme set, chosen to keep the tools' compile time small (a zoo system
 /// costs some 6 schemes, where a built-in system costs 65): midpoint; lpf on Gauss-interior
@@ -157,22 +168,23 @@ std::unique_ptr<any_stepper<T>> make_zoo_stepper(const scheme_spec& spec) {
 }
 
 /// The degrees above the library factory's range (geomint::stepper_max_m), for the built-in
-/// systems: m = 9..16 for lpf on Gauss-interior nodes with the Lagrange basis and for galerkin,
-/// the high-order schemes of the work-precision study (lpf order 2(m - 1), galerkin order 2m),
-/// in 16 and 50 digits. One unit per (system, digits) compiles their 16 engines
-/// (stepper_tu.cpp, GEOMINT_STEPPER_HIGH_M).
+/// systems: m = 9..16 for lpf on Gauss-interior nodes with the Lagrange basis, for its
+/// fixed-point form (natural systems) and for galerkin, the high-order schemes of the
+/// work-precision study (lpf order 2(m - 1), galerkin order 2m), in 16 and 50 digits. One unit
+/// per (system, digits) compiles their 16 (natural systems: 24) engines (stepper_tu.cpp,
+/// GEOMINT_STEPPER_HIGH_M).
 template <class T>
 struct high_m_scheme_set {
   static constexpr int min_m = stepper_max_m + 1;
   static constexpr int max_m = 16;
   static constexpr bool compiled = std::numeric_limits<T>::digits10 <= 50;
   static constexpr const char* describe =
-      "m = 9..16 is compiled for --scheme lpf --nodes gauss-interior --basis lagrange and --scheme galerkin, "
-      "on the built-in free systems, in 16 and 50 digits";
+      "m = 9..16 is compiled for --scheme lpf --nodes gauss-interior --basis lagrange, --scheme lpf-fixed-point "
+      "and --scheme galerkin, on the built-in free systems, in 16 and 50 digits";
   /// Whether `spec` asks for a degree above the library factory's range (midpoint and
   /// trapezoidal have no degree).
   static bool applies(const scheme_spec& spec) {
-    return spec.m > stepper_max_m && (spec.scheme == "lpf" || spec.scheme == "galerkin");
+    return spec.m > stepper_max_m && spec.has_m();
   }
   /// Throws std::invalid_argument with a clear message unless `spec` is in the set.
   static void check(const scheme_spec& spec) {
@@ -181,7 +193,7 @@ struct high_m_scheme_set {
     if (!compiled)
       throw std::invalid_argument(m + "not compiled in " + std::to_string(digits_of<T>()) + " digits (" +
                                   describe + ")");
-    if (spec.scheme == "galerkin") return;
+    if (spec.scheme == "galerkin" || spec.scheme == "lpf-fixed-point") return;
     if (spec.scheme == "lpf" && canonical_node_family(spec.nodes) == gauss_interior::name && spec.basis == "lagrange")
       return;
     throw std::invalid_argument(m + "not compiled for --scheme " + spec.scheme +
@@ -189,39 +201,6 @@ struct high_m_scheme_set {
                                 " (" + describe + ")");
   }
 };
-
-/// The fixed-point form of LPF on Gauss-interior nodes (geomint/schemes/lpf_fixed_point.hpp: the
-/// same map as `lpf --nodes gauss-interior` on a natural system, solved without a Jacobian, its
-/// coefficients exactly symplectic in the scalar): `--scheme lpf-fixed-point`, m = 2..16, on the
-/// built-in natural systems, in 16 and 50 digits. It has no --nodes or --basis. Compiled in the
-/// same units as high_m_scheme_set (stepper_tu.cpp, GEOMINT_STEPPER_HIGH_M).
-template <class Sys, class T>
-struct fixed_point_scheme_set {
-  static constexpr std::string_view scheme = "lpf-fixed-point";
-  static constexpr int min_m = 2;
-  static constexpr int max_m = 16;
-  static constexpr bool compiled =
-      natural_system<Sys> && !is_zoo_system<Sys> && std::numeric_limits<T>::digits10 <= 50;
-  static constexpr const char* describe =
-      "--scheme lpf-fixed-point is compiled for m = 2..16 on the natural built-in systems (harmonic, pendulum, "
-      "kepler), in 16 and 50 digits";
-  static bool applies(const scheme_spec& spec) { return spec.scheme == scheme; }
-  /// Throws std::invalid_argument with a clear message unless `spec` is in the set.
-  static void check(const scheme_spec& spec) {
-    if (spec.m < min_m || spec.m > max_m)
-      throw std::invalid_argument("m = " + std::to_string(spec.m) + ": " + describe);
-    if constexpr (!natural_system<Sys>)
-      throw std::invalid_argument("--system " + std::string(Sys::name) +
-                                  " is not a natural system (L = qdot^T M qdot / 2 - V(q)): " + describe);
-    if (!compiled)
-      throw std::invalid_argument("not compiled in " + std::to_string(digits_of<T>()) + " digits: " + describe);
-  }
-};
-
-/// The stepper of a natural built-in system for a spec in fixed_point_scheme_set (defined in
-/// stepper_tu.cpp for T = double and cpp_bin_float_50).
-template <class Sys, class T>
-std::unique_ptr<any_stepper<T>> make_fixed_point_stepper(const scheme_spec& spec);
 
 /// The stepper of a built-in system for a spec in high_m_scheme_set (defined in stepper_tu.cpp
 /// for T = double and cpp_bin_float_50).
@@ -234,19 +213,27 @@ std::unique_ptr<any_stepper<T>> make_high_m_stepper(const scheme_spec& spec);
 template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec);
 
+/// Throws std::invalid_argument for lpf-fixed-point on a system that is not natural (the
+/// library's factory says so for m <= 8, make_high_m_stepper for m > 8 with this).
+template <class Sys>
+void check_fixed_point_system(const scheme_spec& spec) {
+  if (spec.scheme == "lpf-fixed-point" && !natural_system<Sys>)
+    throw std::invalid_argument("--system " + std::string(Sys::name) + ": " + std::string(fixed_point_natural_only));
+}
+
 /// Throws std::invalid_argument if the free system called `system` has no stepper for `spec` in
 /// the scalar T: an unknown system, a zoo system outside its restricted scheme set, the
-/// fixed-point form outside fixed_point_scheme_set, or a degree above 8 outside high_m_scheme_set. (The built-in systems' other specs are checked by the
+/// fixed-point form on a system that is not natural, or a degree above 8 outside high_m_scheme_set. (The built-in systems' other specs are checked by the
 /// library's factory.)
 template <class T>
 void check_scheme(std::string_view system, const scheme_spec& spec) {
   with_free_system(system, [&]<class Sys>() {
-    if constexpr (is_zoo_system<Sys>)
+    if constexpr (is_zoo_system<Sys>) {
       zoo_scheme_set<Sys, T>::check(spec);
-    else if (fixed_point_scheme_set<Sys, T>::applies(spec))
-      fixed_point_scheme_set<Sys, T>::check(spec);
-    else if (high_m_scheme_set<T>::applies(spec))
-      high_m_scheme_set<T>::check(spec);
+    } else {
+      check_fixed_point_system<Sys>(spec);
+      if (high_m_scheme_set<T>::applies(spec)) high_m_scheme_set<T>::check(spec);
+    }
   });
 }
 
@@ -259,10 +246,6 @@ std::unique_ptr<any_stepper<T>> make_stepper(std::string_view system, const sche
       zoo_scheme_set<Sys, T>::check(spec);  // before the factory, which may be a stub
       if constexpr (!zoo_scheme_set<Sys, T>::compiled) return nullptr;  // (check has thrown)
       else return make_system_stepper<Sys, T>(spec);
-    } else if (fixed_point_scheme_set<Sys, T>::applies(spec)) {
-      fixed_point_scheme_set<Sys, T>::check(spec);
-      if constexpr (!fixed_point_scheme_set<Sys, T>::compiled) return nullptr;  // (check has thrown)
-      else return make_fixed_point_stepper<Sys, T>(spec);
     } else if (high_m_scheme_set<T>::applies(spec)) {
       high_m_scheme_set<T>::check(spec);
       if constexpr (!high_m_scheme_set<T>::compiled) return nullptr;  // (check has thrown)

@@ -1,12 +1,10 @@
 /// The tools' stepper factory, instantiated for one built-in system (GEOMINT_STEPPER_SYSTEM, the
-/// qualified type, e.g. systems::pendulum; with GEOMINT_STEPPER_HIGH_M its degrees 9..16 and,
-/// for a natural system, the fixed-point form of LPF) or for
+/// qualified type, e.g. systems::pendulum; with GEOMINT_STEPPER_HIGH_M its degrees 9..16) or for
 /// all zoo systems (GEOMINT_STEPPER_ZOO), in the scalar of GEOMINT_STEPPER_DIGITS (see
 /// CMakeLists.txt).
 #include <stdexcept>
 #include <string>
 
-#include "geomint/schemes/lpf_fixed_point.hpp"
 #include "stepper.hpp"
 
 #if !(defined(GEOMINT_STEPPER_SYSTEM) || defined(GEOMINT_STEPPER_ZOO)) || !defined(GEOMINT_STEPPER_DIGITS)
@@ -25,7 +23,8 @@ template <class T>
 #endif
 
 #if defined(GEOMINT_STEPPER_HIGH_M)
-/// m = 9..16: lpf on Gauss-interior nodes (Lagrange basis) and galerkin (high_m_scheme_set).
+/// m = 9..16: lpf on Gauss-interior nodes (Lagrange basis), its fixed-point form (natural
+/// systems) and galerkin (high_m_scheme_set).
 template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_high_m_stepper(const scheme_spec& spec) {
 #if GEOMINT_STEPPER_STUB
@@ -37,25 +36,13 @@ std::unique_ptr<any_stepper<T>> make_high_m_stepper(const scheme_spec& spec) {
   auto make = [&]<class Scheme>() { return make_scheme_stepper<Scheme, Sys, T>(); };
   if (spec.scheme == "galerkin")
     return with_int<set::min_m, set::max_m>(spec.m, [&]<int M>() { return make.template operator()<galerkin_vi<M>>(); });
+  if (spec.scheme == "lpf-fixed-point") {
+    check_fixed_point_system<Sys>(spec);  // throws unless Sys is natural
+    if constexpr (natural_system<Sys>)
+      return with_int<set::min_m, set::max_m>(spec.m, [&]<int M>() { return make.template operator()<lpf_fixed_point<M>>(); });
+  }
   return with_int<set::min_m, set::max_m>(spec.m,
                                           [&]<int M>() { return make.template operator()<lpf<M, gauss_interior, lagrange>>(); });
-#endif
-}
-
-/// --scheme lpf-fixed-point, m = 2..16 (fixed_point_scheme_set).
-template <class Sys, class T>
-std::unique_ptr<any_stepper<T>> make_fixed_point_stepper(const scheme_spec& spec) {
-#if GEOMINT_STEPPER_STUB
-  (void)spec;
-  not_compiled<T>();
-#else
-  using set = fixed_point_scheme_set<Sys, T>;
-  set::check(spec);  // throws for a system that is not natural
-  if constexpr (set::compiled)
-    return with_int<set::min_m, set::max_m>(spec.m,
-                                            [&]<int M>() { return make_scheme_stepper<lpf_fixed_point<M>, Sys, T>(); });
-  else
-    return nullptr;  // (check has thrown)
 #endif
 }
 #else
@@ -76,7 +63,6 @@ std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec) {
 using scalar = scalar_for_digits<GEOMINT_STEPPER_DIGITS>;
 #if defined(GEOMINT_STEPPER_HIGH_M)
 template std::unique_ptr<any_stepper<scalar>> make_high_m_stepper<GEOMINT_STEPPER_SYSTEM, scalar>(const scheme_spec&);
-template std::unique_ptr<any_stepper<scalar>> make_fixed_point_stepper<GEOMINT_STEPPER_SYSTEM, scalar>(const scheme_spec&);
 #elif defined(GEOMINT_STEPPER_ZOO)
 // The zoo systems of free_system_types (stepper.hpp), in one unit: their restricted factories
 // are small, and one unit pays the headers' parse time (about 5 s) once instead of six times.

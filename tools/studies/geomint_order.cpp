@@ -30,7 +30,7 @@ const char* usage =
     "Reports the observed orders between the two finest steps (local_order = exponent of the local\n"
     "error, p + 1; global_order = p) and the error constant C = global error / tau^round(p).\n"
     "  systems: harmonic, pendulum, kepler, charged (all); initial data as geomint-run\n"
-    "  schemes: lpf, midpoint, trapezoidal, galerkin (all)\n"
+    "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems)\n"
     "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n"
     "Zoo systems (zoo): henon-heiles, spring-pendulum, double-pendulum, toda, outer-solar, arenstorf,\n"
     "with the restricted scheme set (midpoint; lpf --nodes gauss-interior --m 2..4; galerkin --m 2..3),\n"
@@ -220,9 +220,10 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int status = 0;
+  const int scheme_w = geomint::studies::scheme_column_width(cases);
   if (sel.csv) std::cout << "system,scheme,nodes,m,local_order,global_order,error_constant,regime\n";
   else
-    std::cout << std::left << std::setw(16) << "system" << std::setw(13) << "scheme" << std::setw(16) << "nodes"
+    std::cout << std::left << std::setw(16) << "system" << std::setw(scheme_w) << "scheme" << std::setw(16) << "nodes"
               << std::setw(4) << "m" << std::right << std::setw(8) << "local" << std::setw(8) << "global"
               << std::setw(12) << "constant" << "   global errors at tau = T/N\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -244,7 +245,7 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
       std::cout << c.system << ',' << c.spec.scheme << ',' << c.spec.nodes_label() << ','
                 << geomint::studies::m_label(c.spec) << ',' << lo << ',' << go << ',' << ec << ',' << regime << '\n';
     } else {
-      std::cout << std::left << std::setw(16) << c.system << std::setw(13) << c.spec.scheme << std::setw(16)
+      std::cout << std::left << std::setw(16) << c.system << std::setw(scheme_w) << c.spec.scheme << std::setw(16)
                 << c.spec.nodes_label() << std::setw(4) << geomint::studies::m_label(c.spec) << std::right
                 << std::setw(8) << lo << std::setw(8) << go << std::setw(12) << ec << "  ";
       for (const T& e : r.global_errors) std::cout << ' ' << sci3(e);

@@ -25,7 +25,7 @@ const char* usage =
     "eps^(4/5) for a symplectic map. With --long-steps N (> 0) also N steps of size --long-tau\n"
     "(default tau) in double precision: max |H - H0| and the least-squares drift slope of H - H0.\n"
     "  systems: harmonic, pendulum, kepler, charged (all); default initial data as geomint-run\n"
-    "  schemes: lpf, midpoint, trapezoidal, galerkin (all)\n"
+    "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems)\n"
     "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n"
     "  zoo systems: henon-heiles, spring-pendulum, double-pendulum, toda, outer-solar, arenstorf\n"
     "  (zoo) with the restricted scheme set: midpoint; lpf --nodes gauss-interior --m 2..4;\n"
@@ -148,11 +148,12 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int status = 0;
+  const int scheme_w = geomint::studies::scheme_column_width(cases);
   const bool longrun = x.long_steps > 0;
   if (sel.csv)
     std::cout << "system,scheme,nodes,m,tau,defect" << (longrun ? ",max_energy_error,energy_drift" : "") << ",regime\n";
   else
-    std::cout << std::left << std::setw(16) << "system" << std::setw(13) << "scheme" << std::setw(16) << "nodes"
+    std::cout << std::left << std::setw(16) << "system" << std::setw(scheme_w) << "scheme" << std::setw(16) << "nodes"
               << std::setw(4) << "m" << std::right << std::setw(11) << "defect"
               << (longrun ? "   max|H-H0|   dH/dt" : "") << '\n';
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -173,7 +174,7 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
       if (longrun) std::cout << ',' << r.max_energy << ',' << r.drift;
       std::cout << ',' << (r.failure.empty() ? r.regime : "failed");
     } else {
-      std::cout << std::left << std::setw(16) << c.system << std::setw(13) << c.spec.scheme << std::setw(16)
+      std::cout << std::left << std::setw(16) << c.system << std::setw(scheme_w) << c.spec.scheme << std::setw(16)
                 << c.spec.nodes_label() << std::setw(4) << geomint::studies::m_label(c.spec) << std::right
                 << std::setw(11) << r.defect;
       if (longrun) std::cout << std::setw(12) << r.max_energy << std::setw(10) << r.drift;

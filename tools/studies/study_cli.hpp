@@ -41,7 +41,10 @@ struct selection {
           else if (v == "zoo") systems = tools::zoo_systems();
           else systems = cli::parse_choice_list("--system", v, tools::free_systems());
         })
-        .value("--scheme", [this](const std::string& v) { schemes = cli::parse_choice_list("--scheme", v, tools::scheme_list()); })
+        .value("--scheme", [this](const std::string& v) {
+          // "all": the schemes of every system; lpf-fixed-point (natural systems only) is named.
+          schemes = v == "all" ? tools::schemes_of_every_system() : cli::parse_choice_list("--scheme", v, tools::scheme_list());
+        })
         .value("--nodes", [this](const std::string& v) { nodes = cli::parse_node_family_list("--nodes", v); })
         .value("--m", [this](const std::string& v) { std::tie(m_low, m_high) = cli::parse_integer_range<int>("--m", v, 2, 8); })
         .value("--digits", [this, allowed_digits](const std::string& v) {
@@ -85,6 +88,13 @@ struct selection {
     return out;
   }
 };
+
+/// The width of the tables' scheme column: 13, or wider for a longer scheme name.
+inline int scheme_column_width(const std::vector<study_case>& cases) {
+  std::size_t width = 13;
+  for (const study_case& c : cases) width = std::max(width, c.spec.scheme.size() + 2);
+  return static_cast<int>(width);
+}
 
 /// The m column of the tables ("-" for midpoint and trapezoidal).
 inline std::string m_label(const scheme_spec& s) { return s.has_m() ? std::to_string(s.m) : "-"; }
