@@ -122,6 +122,31 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the same map as lpf<m, gauss_interior>
   compare.template operator()<12>();
 }
 
+TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the sweep budget grows with the scalar's digits", "[lpf_fixed_point]",
+                        geomint::test::integrator_scalar_types) {
+  // Kepler (e = 1/2) at the pericentre with m = 2 and tau = 1/4: the one-stage iteration
+  // contracts slowly there and needs more than the 50 sweeps of the default budget to reach 50
+  // digits (measured: that budget failed in cpp_bin_float_50). With the budget per 16 digits
+  // (sweep_budget) the step converges in every scalar, to the Newton form's step (second
+  // method, lpf.hpp) within a few eps.
+  using T = TestType;
+  const T tau = T(1) / T(4);
+  const auto [q0, v0] = kepler_start<T>();
+  integrator<lpf_fixed_point<2>, systems::kepler, T> A(systems::kepler{}, tau);
+  integrator<lpf<2, gauss_interior>, systems::kepler, T> B(systems::kepler{}, tau);
+  auto a = A.initial_state(q0, v0);
+  auto b = B.initial_state(q0, v0);
+  const step_status st = A.try_step(a);
+  REQUIRE(st);
+  B.step(b);
+  INFO("sweeps: " << st.iterations << ", |q_a - q_b| = " << (a.q - b.q).norm());
+  // In 50 digits the step needs more sweeps than max_iterations (measured 54 against 50; 18 in
+  // double): the case the budget per 16 digits is for.
+  if constexpr (std::numeric_limits<T>::digits10 > 16) CHECK(st.iterations > newton_options<T>{}.max_iterations);
+  CHECK((a.q - b.q).template lpNorm<Eigen::Infinity>() <= eps_tol<T>(16));
+  CHECK((a.p - b.p).template lpNorm<Eigen::Infinity>() <= eps_tol<T>(16));
+}
+
 TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: continuing steps and fresh steps solve the same equations",
                         "[lpf_fixed_point]", geomint::test::integrator_scalar_types) {
   // The step memory predicts a continuing step by extrapolating the previous stage forces; a

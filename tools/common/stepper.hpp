@@ -109,7 +109,7 @@ inline const std::vector<std::string>& schemes_of_every_system() {
 }
 
 /// The zoo's restricted scheme set, chosen to keep the tools' compile time small (a zoo system
-/// costs some 6 schemes, where a built-in system costs 65): midpoint; lpf on Gauss-interior
+/// costs some 6 schemes, where a built-in system costs 65, 72 if natural): midpoint; lpf on Gauss-interior
 /// nodes with the Lagrange basis, m = 2..4 (order 2(m - 1)); galerkin, m = 2..3 (order 2m); in
 /// 16 and 50 digits. In 50 digits the outer solar system (18 dof) has m = 2 only: the Newton
 /// matrix of a degree-m step has (18 m)^2 entries and is kept on the stack.
@@ -223,8 +223,8 @@ void check_fixed_point_system(const scheme_spec& spec) {
 
 /// Throws std::invalid_argument if the free system called `system` has no stepper for `spec` in
 /// the scalar T: an unknown system, a zoo system outside its restricted scheme set, the
-/// fixed-point form on a system that is not natural, or a degree above 8 outside high_m_scheme_set. (The built-in systems' other specs are checked by the
-/// library's factory.)
+/// fixed-point form on a system that is not natural, or a degree above 8 outside
+/// high_m_scheme_set. (The built-in systems' other specs are checked by the library's factory.)
 template <class T>
 void check_scheme(std::string_view system, const scheme_spec& spec) {
   with_free_system(system, [&]<class Sys>() {

@@ -149,7 +149,7 @@ class lpf_fixed_point_engine {
   /// (q_k, p_k) -> (q_{k+1}, p_{k+1}); `solution` (if not null) receives the stage increments;
   /// `carry` selects compensated summation of the update (as step_skeleton::one_step). On
   /// failure q1, p1 and carry are untouched. opt.max_iterations bounds the fixed-point
-  /// iterations.
+  /// sweeps per 16 digits of T (sweep_budget).
   step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt,
                        unknowns* solution = nullptr, phase_carry<T, n>* carry = nullptr) const {
     opt.validate();
@@ -209,17 +209,18 @@ class lpf_fixed_point_engine {
   /// F <- tau b_i f(Q_i(F)) until the increments stop changing: exactly (a fixed point in T),
   /// or, once below eps^(2/3) relative, when the change has grown twice in a row (the
   /// round-off floor). A non-finite iterate, two growths in a row above that level, or the
-  /// iteration budget spent above `tolerance_ulps` eps is a failure.
+  /// iteration budget (sweep_budget) spent above `tolerance_ulps` eps is a failure.
   step_status iterate(const V& q, const V& v, const T& tau, const std::array<T, S>& hb, std::array<V, S>& F,
                       const newton_options<T>& opt) const {
     using std::abs;
     using std::cbrt;
     const T eps = std::numeric_limits<T>::epsilon();
     const T floor_level = cbrt(eps * eps);
+    const int budget = sweep_budget(opt);
     step_status st;
     T previous = std::numeric_limits<T>::infinity();
     int growth = 0;
-    for (int it = 1; it <= opt.max_iterations; ++it) {
+    for (int it = 1; it <= budget; ++it) {
       st.iterations = it;
       std::array<V, S> next;
       T change(0), size(0);
@@ -253,10 +254,20 @@ class lpf_fixed_point_engine {
         growth = 0;
       }
       previous = change;
-      if (it == opt.max_iterations && change <= T(opt.tolerance_ulps) * eps * scale) return st;
+      if (it == budget && change <= T(opt.tolerance_ulps) * eps * scale) return st;
     }
     st.reason = step_failure::no_convergence;
     return st;
+  }
+
+  /// The sweeps allowed: opt.max_iterations per 16 decimal digits of T (rounded up). The
+  /// iteration converges linearly, gaining about the same number of digits per sweep, so a
+  /// scalar with more digits needs proportionally more sweeps, where Newton's quadratic
+  /// convergence needs only a few more iterations (Kepler, m = 2, tau = 1/4 near pericentre:
+  /// more than 50 sweeps in 50 digits, fewer in double).
+  static int sweep_budget(const newton_options<T>& opt) {
+    constexpr int per_double = (std::numeric_limits<T>::digits10 + 15) / 16;
+    return opt.max_iterations * (per_double > 1 ? per_double : 1);
   }
 
   Sys sys_;
