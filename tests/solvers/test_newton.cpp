@@ -25,6 +25,20 @@ void circle_hyperbola(const vec<T, 2>& z, vec<T, 2>& F, mat<T, 2>* J) {
 }
 }  // namespace
 
+TEMPLATE_LIST_TEST_CASE("epsilon_two_thirds: eps^(2/3) of the scalar", "[solvers]", geomint::test::integrator_scalar_types) {
+  // Two independent checks: the cube of the result is eps^2 to within a few roundings (exact
+  // mathematics), and it equals the library cube root of eps^2 (std::cbrt, or Boost's generic
+  // cbrt for a multiprecision scalar, which the helper avoids) to within an ulp.
+  using T = TestType;
+  using std::abs;
+  using std::cbrt;
+  const T eps = std::numeric_limits<T>::epsilon();
+  const T x = epsilon_two_thirds<T>();
+  const T a = eps * eps;
+  CHECK(abs(T(x * x * x - a)) <= T(8) * eps * a);
+  CHECK(abs(T(x - cbrt(a))) <= T(2) * eps * x);
+}
+
 TEMPLATE_LIST_TEST_CASE("newton_solve: quadratic convergence to the closed-form root", "[solvers]",
                         geomint::test::integrator_scalar_types) {
   using T = TestType;

@@ -156,6 +156,11 @@ class lpf_fixed_point_engine {
     try_lock_flag lock(memory_.busy);
     fixed_point_memory<T, n, S>* mem = lock.owned() ? &memory_ : nullptr;
     const V v = minv_ * p;
+    // Compensated summation: the state is (q + carry.q, p + carry.p); the stages and the
+    // update see the carried parts through `shift` and `dv` (as in IRKGL16), so that the
+    // increments are those of the state the carry stands for, not of its rounding.
+    const V shift = carry ? carry->q : V::Zero();
+    const V dv = carry ? V(minv_ * carry->p) : V::Zero();
     std::array<T, S> hb;
     for (int i = 0; i < S; ++i) hb[static_cast<std::size_t>(i)] = tau * k_.b[static_cast<std::size_t>(i)];
     std::array<V, S> F;
@@ -169,7 +174,7 @@ class lpf_fixed_point_engine {
       for (int i = 0; i < S; ++i)
         F[static_cast<std::size_t>(i)] = hb[static_cast<std::size_t>(i)] * force(V(q + (tau * k_.c[static_cast<std::size_t>(i)]) * v));
     }
-    step_status st = iterate(q, v, tau, hb, F, opt);
+    step_status st = iterate(q, shift, v, dv, tau, hb, F, opt);
     if (!st) {
       if (mem) mem->valid = false;
       return st;
@@ -179,7 +184,7 @@ class lpf_fixed_point_engine {
       dp += F[static_cast<std::size_t>(i)];
       se += k_.e[static_cast<std::size_t>(i)] * F[static_cast<std::size_t>(i)];
     }
-    const V dq = tau * V(v + minv_ * se);
+    const V dq = tau * V(v + V(dv + minv_ * se));
     phase_carry<T, n> carry_next;
     if (carry) carry_next = *carry;
     q1 = apply_end_update<T, n>(q, dq, true, carry ? &carry_next.q : nullptr);
@@ -210,12 +215,11 @@ class lpf_fixed_point_engine {
   /// or, once below eps^(2/3) relative, when the change has grown twice in a row (the
   /// round-off floor). A non-finite iterate, two growths in a row above that level, or the
   /// iteration budget (sweep_budget) spent above `tolerance_ulps` eps is a failure.
-  step_status iterate(const V& q, const V& v, const T& tau, const std::array<T, S>& hb, std::array<V, S>& F,
-                      const newton_options<T>& opt) const {
+  step_status iterate(const V& q, const V& shift, const V& v, const V& dv, const T& tau, const std::array<T, S>& hb,
+                      std::array<V, S>& F, const newton_options<T>& opt) const {
     using std::abs;
-    using std::cbrt;
     const T eps = std::numeric_limits<T>::epsilon();
-    const T floor_level = cbrt(eps * eps);
+    const T floor_level = epsilon_two_thirds<T>();
     const int budget = sweep_budget(opt);
     step_status st;
     T previous = std::numeric_limits<T>::infinity();
@@ -227,7 +231,8 @@ class lpf_fixed_point_engine {
       for (int i = 0; i < S; ++i) {
         V z = V::Zero();
         for (int j = 0; j < S; ++j) z += k_.mu[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * F[static_cast<std::size_t>(j)];
-        const V Q = q + tau * V(k_.c[static_cast<std::size_t>(i)] * v + minv_ * z);
+        const T ci = k_.c[static_cast<std::size_t>(i)];
+        const V Q = q + V(shift + tau * V(ci * v + V(ci * dv + minv_ * z)));
         next[static_cast<std::size_t>(i)] = hb[static_cast<std::size_t>(i)] * force(Q);
         if (!all_finite(next[static_cast<std::size_t>(i)])) {
           st.reason = step_failure::non_finite_iterate;

@@ -7,7 +7,9 @@
 /// Jacobian, a non-finite residual or iterate, or no convergence within the iteration budget.
 
 #include <array>
+#include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <stdexcept>
 #include <string>
@@ -41,6 +43,33 @@ struct newton_options {
 };
 
 
+/// eps^(2/3) of T, the round-off floor of the convergence tests. Built-in floating types use
+/// std::cbrt. Other types use Newton's iteration for the cube root of eps^2 from the power of two
+/// nearest to it (frexp, ldexp): within an ulp or two of cbrt, and unlike Boost.Multiprecision's
+/// generic cbrt (which instantiates Boost.Math's, about 1.5 s of GCC 12 -O2 time in every
+/// cpp_bin_float_50 file, docs/results/compile_time.md) it needs only + * /.
+template <class T>
+T epsilon_two_thirds() {
+  const T eps = std::numeric_limits<T>::epsilon();
+  const T a = eps * eps;
+  if constexpr (std::is_floating_point_v<T>) {
+    return std::cbrt(a);
+  } else {
+    using std::frexp;
+    using std::ldexp;
+    int e = 0;
+    frexp(a, &e);  // a = f 2^e with f in [1/2, 1)
+    T x = ldexp(T(1), e / 3);
+    x = (T(2) * x + a / (x * x)) / T(3);  // now x >= cbrt(a) (AM-GM), and the iteration decreases
+    for (int it = 0; it < 200; ++it) {
+      const T next = (T(2) * x + a / (x * x)) / T(3);
+      if (!(next < x)) break;
+      x = next;
+    }
+    return x;
+  }
+}
+
 /// Solves F(z) = 0 from z. `residual(z, F, J)` fills F and J = dF/dz.
 template <int N, class T, class Fn>
 step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt) {
@@ -48,8 +77,7 @@ step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& o
   using std::abs;
   const T eps = std::numeric_limits<T>::epsilon();
   const T tol = T(opt.tolerance_ulps) * eps;
-  using std::cbrt;
-  const T floor_level = cbrt(eps * eps);  // eps^(2/3)
+  const T floor_level = epsilon_two_thirds<T>();
   step_status st;
   vec<T, N> F;
   mat<T, N> J;
@@ -101,10 +129,9 @@ template <int N, class T, class Fn>
 step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt, const T& scale,
                                     jacobian_cache<T, N>* cache = nullptr) {
   opt.validate();
-  using std::cbrt;
   const T eps = std::numeric_limits<T>::epsilon();
   const T tol = T(opt.tolerance_ulps) * eps;
-  const T floor_level = cbrt(eps * eps);  // eps^(2/3)
+  const T floor_level = epsilon_two_thirds<T>();
   step_status st;
   if (!cache) {
     jacobian_cache<T, N> local;
