@@ -22,10 +22,10 @@ const char* usage =
     "Integrates the system with the one-step (q, p) form of the chosen scheme. With --csv prints\n"
     "step,t,q1,...,qn,p1,...,pn,energy every K steps and at the last step, in the full precision\n"
     "of the scalar (16: double, 50/100: cpp_bin_float). p is the canonical momentum dL/dqdot.\n"
-    "--nodes and --basis apply to lpf; galerkin is the degree-m Galerkin VI with m-point\n"
-    "Gauss-Legendre quadrature of the action. m = 2..8 for every scheme and node family; m = 9..16\n"
-    "for lpf --nodes gauss-interior --basis lagrange and galerkin on the built-in free systems, in\n"
-    "16 and 50 digits.\n"
+    "--nodes and --basis apply to lpf only (an error with another scheme); galerkin is the\n"
+    "degree-m Galerkin VI with m-point Gauss-Legendre quadrature of the action. m = 2..8 for\n"
+    "every scheme and node family; m = 9..16 for lpf --nodes gauss-interior --basis lagrange and\n"
+    "galerkin on the built-in free systems, in 16 and 50 digits.\n"
     "lpf-fixed-point is lpf --nodes gauss-interior --basis lagrange on a natural system in its\n"
     "fixed-point form (no Jacobian; coefficients exactly symplectic in the scalar), on harmonic,\n"
     "pendulum and kepler, with the m and digits of lpf; it takes no --nodes or --basis.\n"
@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   using geomint::run::options;
   constexpr long max_count = 1'000'000'000'000L;  // the stated bound of --steps and --every
   options o;
+  bool nodes_or_basis_given = false;  // --nodes and --basis choose among the lpf schemes only
   cli::parser cl("geomint-run", usage);
   cl.value("--system", [&](const std::string& v) {
       std::vector<std::string> systems = geomint::tools::free_systems();
@@ -76,8 +77,12 @@ int main(int argc, char** argv) {
       })
       .value("--nodes", [&](const std::string& v) {
         o.nodes = cli::parse_node_family("--nodes", v);
+        nodes_or_basis_given = true;
       })
-      .value("--basis", [&](const std::string& v) { o.basis = cli::parse_choice("--basis", v, {"lagrange", "bernstein"}); })
+      .value("--basis", [&](const std::string& v) {
+        o.basis = cli::parse_choice("--basis", v, {"lagrange", "bernstein"});
+        nodes_or_basis_given = true;
+      })
       .value("--digits", [&](const std::string& v) { o.digits = std::stoi(cli::parse_choice("--digits", v, {"16", "50", "100"})); })
       .value("--m", [&](const std::string& v) { o.m = cli::parse_integer<int>("--m", v, 2, 16); })
       .value("--steps", [&](const std::string& v) { o.steps = cli::parse_integer<long>("--steps", v, 0, max_count); })
@@ -90,6 +95,9 @@ int main(int argc, char** argv) {
       .toggle("--compensated", [&] { o.compensated = true; })
       .toggle("--growth", [&] { o.growth = true; });
   if (const auto done = cl.parse(argc, argv)) return *done;
+  if (nodes_or_basis_given && o.scheme != "lpf")
+    return cl.fail("--nodes and --basis apply to --scheme lpf only, not to --scheme " + o.scheme +
+                   (o.scheme == "lpf-fixed-point" ? " (Gauss-interior nodes by construction)" : ""));
   try {
     return geomint::cli::finish_stdout("geomint-run", dispatch(o));
   } catch (const std::invalid_argument& e) {

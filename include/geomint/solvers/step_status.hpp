@@ -17,7 +17,7 @@ enum class step_failure {
   invalid_step_size,   ///< tau <= 0 or not finite
   non_finite_input,    ///< q, p (or x^{k-1}, x^k) contain NaN or infinity
   singular_jacobian,   ///< the Newton matrix is singular to working precision
-  non_finite_iterate,  ///< Newton produced NaN or infinity (divergence), or the result is not finite
+  non_finite_iterate,  ///< the iteration (Newton or fixed-point) produced NaN or infinity, or the result is not finite
   no_convergence,      ///< the iteration budget ran out
   energy_growth,       ///< the energy left the bound the options set: the step is outside the scheme's regime
   left_regime,         ///< the step monitor refused the converged step (see step_monitor.hpp)
@@ -29,8 +29,8 @@ inline std::string_view to_string(step_failure f) {
     case step_failure::invalid_step_size: return "invalid step size (tau must be finite and > 0)";
     case step_failure::non_finite_input: return "non-finite input state";
     case step_failure::singular_jacobian: return "singular Newton Jacobian";
-    case step_failure::non_finite_iterate: return "Newton iterate became non-finite (divergence)";
-    case step_failure::no_convergence: return "Newton did not converge";
+    case step_failure::non_finite_iterate: return "the iterate became non-finite (divergence)";
+    case step_failure::no_convergence: return "the iteration (Newton or fixed-point) did not converge";
     case step_failure::energy_growth: return "the energy grew beyond its limit (step outside the scheme's stable regime)";
     case step_failure::left_regime:
       return "step left the scheme's regime (relative energy change per step above the monitor's bound; reduce tau)";
@@ -43,7 +43,7 @@ inline std::string_view to_string(step_failure f) {
 struct step_status {
   step_failure reason = step_failure::none;
   long step = 0;        ///< index k of the step k -> k+1 that was attempted
-  int iterations = 0;   ///< Newton iterations used
+  int iterations = 0;   ///< iterations used (Newton iterations or fixed-point sweeps)
   int node = -1;        ///< the grid node concerned (beam), or -1
   /// For left_regime: the observed relative energy change and the monitor's bound (as double,
   /// for the message only).
@@ -54,7 +54,7 @@ struct step_status {
     if (reason == step_failure::left_regime)
       text += ": |E_{k+1} - E_k| / max(|E_k|, |E_{k+1}|) = " + std::to_string(observed) + " > " + std::to_string(bound);
     if (node >= 0) text += " at node " + std::to_string(node);
-    if (iterations > 0) text += " (after " + std::to_string(iterations) + " Newton iterations)";
+    if (iterations > 0) text += " (after " + std::to_string(iterations) + " iterations)";
     return text;
   }
 };
