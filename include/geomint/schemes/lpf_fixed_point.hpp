@@ -156,13 +156,18 @@ class lpf_fixed_point_engine {
     try_lock_flag lock(memory_.busy);
     fixed_point_memory<T, n, S>* mem = lock.owned() ? &memory_ : nullptr;
     const V v = minv_ * p;
-    // Compensated summation: the state is (q + carry.q, p + carry.p); the stages and the
-    // update see the carried parts through `shift` and `dv` (as in IRKGL16), so that the
-    // increments are those of the state the carry stands for, not of its rounding.
-    const V shift = carry ? carry->q : V::Zero();
+    // Compensated summation: the state is (q + carry.q, p + carry.p). The stages and the update
+    // see the carried parts (as in IRKGL16), so that the increments are those of the state the
+    // carry stands for, not of its rounding: stage i is q + (offset_i + tau (c_i v + M^{-1} z_i))
+    // with offset_i = carry.q + tau c_i M^{-1} carry.p (zero without compensation).
     const V dv = carry ? V(minv_ * carry->p) : V::Zero();
-    std::array<T, S> hb;
-    for (int i = 0; i < S; ++i) hb[static_cast<std::size_t>(i)] = tau * k_.b[static_cast<std::size_t>(i)];
+    stage_terms terms;
+    for (int i = 0; i < S; ++i) {
+      const auto I = static_cast<std::size_t>(i);
+      terms.hb[I] = tau * k_.b[I];
+      terms.cv[I] = k_.c[I] * v;
+      terms.offset[I] = carry ? V(carry->q + tau * V(k_.c[I] * dv)) : V::Zero();
+    }
     std::array<V, S> F;
     if (mem && mem->continues(q, p, tau)) {
       for (int i = 0; i < S; ++i) {
@@ -172,9 +177,9 @@ class lpf_fixed_point_engine {
       }
     } else {
       for (int i = 0; i < S; ++i)
-        F[static_cast<std::size_t>(i)] = hb[static_cast<std::size_t>(i)] * force(V(q + (tau * k_.c[static_cast<std::size_t>(i)]) * v));
+        F[static_cast<std::size_t>(i)] = terms.hb[static_cast<std::size_t>(i)] * force(V(q + (tau * k_.c[static_cast<std::size_t>(i)]) * v));
     }
-    step_status st = iterate(q, shift, v, dv, tau, hb, F, opt);
+    step_status st = iterate(q, tau, terms, F, opt);
     if (!st) {
       if (mem) mem->valid = false;
       return st;
@@ -200,6 +205,12 @@ class lpf_fixed_point_engine {
   }
 
  private:
+  /// What every sweep of one step reuses: tau b_i, c_i v and the stage offsets of the carry.
+  struct stage_terms {
+    std::array<T, S> hb;
+    std::array<V, S> cv, offset;
+  };
+
   /// f(x) = -grad V(x), one level of AD.
   V force(const V& x) const {
     using D = dual<T, n>;
@@ -215,8 +226,8 @@ class lpf_fixed_point_engine {
   /// or, once below eps^(2/3) relative, when the change has grown twice in a row (the
   /// round-off floor). A non-finite iterate, two growths in a row above that level, or the
   /// iteration budget (sweep_budget) spent above `tolerance_ulps` eps is a failure.
-  step_status iterate(const V& q, const V& shift, const V& v, const V& dv, const T& tau, const std::array<T, S>& hb,
-                      std::array<V, S>& F, const newton_options<T>& opt) const {
+  step_status iterate(const V& q, const T& tau, const stage_terms& terms, std::array<V, S>& F,
+                      const newton_options<T>& opt) const {
     using std::abs;
     const T eps = std::numeric_limits<T>::epsilon();
     const T floor_level = epsilon_two_thirds<T>();
@@ -231,9 +242,9 @@ class lpf_fixed_point_engine {
       for (int i = 0; i < S; ++i) {
         V z = V::Zero();
         for (int j = 0; j < S; ++j) z += k_.mu[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * F[static_cast<std::size_t>(j)];
-        const T ci = k_.c[static_cast<std::size_t>(i)];
-        const V Q = q + V(shift + tau * V(ci * v + V(ci * dv + minv_ * z)));
-        next[static_cast<std::size_t>(i)] = hb[static_cast<std::size_t>(i)] * force(Q);
+        const auto I = static_cast<std::size_t>(i);
+        const V Q = q + V(terms.offset[I] + tau * V(terms.cv[I] + minv_ * z));
+        next[I] = terms.hb[I] * force(Q);
         if (!all_finite(next[static_cast<std::size_t>(i)])) {
           st.reason = step_failure::non_finite_iterate;
           return st;
