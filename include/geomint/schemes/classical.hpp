@@ -42,14 +42,16 @@ class galerkin_method : public path_method<Sys, T, M, Basis> {
   galerkin_method(const Sys& sys, const weights& pw, const B& B0, const B& B1, const vec<T, Q>& qw)
       : base(sys, pw), B0_(B0), B1_(B1), qw_(qw) {}
 
-  /// The iterations after the first need only first derivatives of L (J is null then).
-  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, mat<T, unknowns>* J) const {
+  /// The iterations after the first need only first derivatives of L (J is null then). With a
+  /// carry (compensated summation) the path starts at q + carry.q and p_k is p + carry.p.
+  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, mat<T, unknowns>* J,
+                const phase_carry<T, n>* carry = nullptr) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
     F.setZero();
     if (J) J->setZero();
     const T tau2 = tau * tau;
     for (int k = 0; k < Q; ++k) {
-      const V x = q + combine(Y, B0_, k), v = combine(Y, B1_, k) / tau;
+      const V x = this->from_start(q, combine(Y, B0_, k), carry), v = combine(Y, B1_, k) / tau;
       if (J) {
         const hessian_data<T, n> h = D::hessian(sys_, x, v);
         for (int j = 0; j < M; ++j) {
@@ -68,18 +70,20 @@ class galerkin_method : public path_method<Sys, T, M, Basis> {
       }
     }
     F.template segment<n>(0) += tau * p;  // p_k + d_1 L_d = 0
+    if (carry) F.template segment<n>(0) += tau * carry->p;
   }
 
   /// q_{k+1} = X_M; p_{k+1} = G_M = sum_j G_j - G_0 - (G_1 + ... + G_{M-1}) = p_k + tau sum_k
   /// w_k L_q(x_k, v_k) at the solution (the basis sums to 1, its derivatives to 0): the same
   /// value as G_M, but the Newton and round-off errors of Y do not pass through B1 / tau (an
   /// RKN-like update). Both as increments (u.q = X_M - q_k, u.p = p_{k+1} - p_k).
-  step_status finish(const V& q, const V&, const T& tau, const Z& z, end_update<T, n>& u) const {
+  step_status finish(const V& q, const V&, const T& tau, const Z& z, end_update<T, n>& u,
+                     const phase_carry<T, n>* carry = nullptr) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
     u.q = Y.col(M);
     V sum = V::Zero();
     for (int k = 0; k < Q; ++k) {
-      const V x = q + combine(Y, B0_, k), v = combine(Y, B1_, k) / tau;
+      const V x = this->from_start(q, combine(Y, B0_, k), carry), v = combine(Y, B1_, k) / tau;
       sum += qw_[k] * D::gradient(sys_, x, v).Lq;
     }
     u.p = tau * sum;

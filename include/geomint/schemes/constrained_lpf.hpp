@@ -58,13 +58,16 @@ class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::do
   const Sys& system() const { return sys_; }
   const Con& constraints() const { return con_; }
 
-  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& Fv, mat<T, unknowns>* J) const {
+  /// (The constrained integrator has no compensated summation: the carry is always null.)
+  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& Fv, mat<T, unknowns>* J,
+                const phase_carry<T, n>* = nullptr) const {
     forward_residual<unknowns, true>(q, p, tau, z, Fv, J);
   }
 
   /// q_{k+1} = X_m; p_{k+1} = dL/dqdot(t_{k+1}) projected onto the hidden constraint.
   /// q as an increment, the projected momentum as a value (end_update).
-  step_status finish(const V& q, const V&, const T& tau, const Z& z, end_update<T, n>& u) const {
+  step_status finish(const V& q, const V&, const T& tau, const Z& z, end_update<T, n>& u,
+                     const phase_carry<T, n>* = nullptr) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
     u.q = w_.template value<n>(Y, M);
     const V q1 = q + u.q;

@@ -71,25 +71,27 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
   }
 
   /// Row block 0: tau (dL/dxdot(t_k) - p_k) = 0 (eq. 9 with eq. 11); row blocks 1..m-1:
-  /// tau^2 E(x(c_i), xdot(c_i), xddot(c_i)) = 0 (eq. 12).
-  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, mat<T, unknowns>* J) const {
+  /// tau^2 E(x(c_i), xdot(c_i), xddot(c_i)) = 0 (eq. 12). With a carry (compensated summation)
+  /// the path starts at q + carry.q and row 0 matches p + carry.p.
+  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, mat<T, unknowns>* J,
+                const phase_carry<T, n>* carry = nullptr) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
     const T tau2 = tau * tau;
     if (J) J->setZero();
     {
-      const V x = q + w_.template value<n>(Y, 0);
+      const V x = this->from_start(q, w_.template value<n>(Y, 0), carry);
       const V v = combine(Y, w_.D1, 0) / tau;
       if (J) {
         const hessian_data<T, n> h = D::hessian(sys_, x, v);
-        F.template segment<n>(0) = tau * (h.Lv - p);
+        F.template segment<n>(0) = tau * momentum_mismatch(h.Lv, p, carry);
         for (int j = 1; j <= M; ++j)
           J->template block<n, n>(0, (j - 1) * n) = (tau * w_.D0(0, j)) * h.Lvq + w_.D1(0, j) * h.Lvv;
       } else {
-        F.template segment<n>(0) = tau * (D::momentum_of(sys_, x, v) - p);
+        F.template segment<n>(0) = tau * momentum_mismatch(D::momentum_of(sys_, x, v), p, carry);
       }
     }
     for (int i = 1; i < M; ++i) {
-      const V x = q + w_.template value<n>(Y, i);
+      const V x = this->from_start(q, w_.template value<n>(Y, i), carry);
       const V v = combine(Y, w_.D1, i) / tau;
       const V a = combine(Y, w_.D2, i) / tau2;
       if (J) {
@@ -110,28 +112,34 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
   /// tau^2 M^{-1} sum_i beta_i L_q(x_i). The same map as differentiating the path at t_{k+1},
   /// but the Newton and round-off errors of the increments enter only through tau^2 L_qq, not
   /// through D1 / tau (as in an RKN update). Other systems: p_{k+1} = dL/dxdot(t_{k+1}) (eq. 10).
-  /// Produced as increments (u.q = q_{k+1} - q_k, u.p = p_{k+1} - p_k) except that last p_{k+1}.
-  step_status finish(const V& q, const V& p, const T& tau, const Z& z, end_update<T, n>& u) const {
+  /// Produced as increments (u.q = q_{k+1} - q_k, u.p = p_{k+1} - p_k) except that last p_{k+1};
+  /// from q + carry.q, p + carry.p with a carry (compensated summation).
+  step_status finish(const V& q, const V& p, const T& tau, const Z& z, end_update<T, n>& u,
+                     const phase_carry<T, n>* carry = nullptr) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
     if constexpr (natural_system<Sys>) {
       V sb = V::Zero(), sbeta = V::Zero();
       for (int i = 1; i < M; ++i) {
-        const V x = q + w_.template value<n>(Y, i);
+        const V x = this->from_start(q, w_.template value<n>(Y, i), carry);
         const V f = D::gradient(sys_, x, V::Zero()).Lq;
         sb += quad_b_[static_cast<std::size_t>(i - 1)] * f;
         sbeta += quad_beta_[static_cast<std::size_t>(i - 1)] * f;
       }
       u.p = tau * sb;
-      V dq;  // tau M^{-1} (p + tau sbeta), written out (for n = 1 Eigen's product is a mixed-type inner product)
+      // tau M^{-1} (p + tau sbeta) (with a carry p + (carry.p + tau sbeta)), written out: for
+      // n = 1 Eigen's product is a mixed-type inner product.
+      V sp = tau * sbeta;
+      if (carry) sp = V(carry->p + sp);
+      V dq;
       for (int r = 0; r < n; ++r) {
         T sum(0);
-        for (int c = 0; c < n; ++c) sum += minv_(r, c) * (p[c] + tau * sbeta[c]);
+        for (int c = 0; c < n; ++c) sum += minv_(r, c) * (p[c] + sp[c]);
         dq[r] = tau * sum;
       }
       u.q = dq;
     } else {
       u.q = w_.template value<n>(Y, M);
-      u.p = D::momentum_of(sys_, V(q + u.q), V(combine(Y, w_.D1, M) / tau));
+      u.p = D::momentum_of(sys_, this->from_start(q, u.q, carry), V(combine(Y, w_.D1, M) / tau));
       u.p_is_increment = false;
     }
     return {};
@@ -174,6 +182,11 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
   }
 
  private:
+  /// L_v - p_k, or L_v - (p_k + carry.p) with the small parts subtracted last.
+  static V momentum_mismatch(const V& Lv, const V& p, const phase_carry<T, n>* carry) {
+    return carry ? V(V(Lv - p) - carry->p) : V(Lv - p);
+  }
+
   std::array<T, M - 1> quad_b_, quad_beta_;
   mat<T, n> minv_ = mat<T, n>::Zero();  // M^{-1} (natural systems)
 };

@@ -43,6 +43,12 @@ class path_method {
   /// after the path (in z already) kept.
   void extrapolate(const Z& previous, Z& z) const { extrapolate_path<T, n, M, unknowns>(w_.extrapolate, previous, z); }
 
+  /// q + d, the point at increment d from the step's start: with compensated summation
+  /// (carry not null) from the state q + carry.q, the two small parts added first.
+  static V from_start(const V& q, const V& d, const phase_carry<T, n>* carry) {
+    return carry ? V(q + V(carry->q + d)) : V(q + d);
+  }
+
   /// The control points X_0..X_M of the path fitted on the step from q_k with unknowns z.
   controls path(const V& q, const Z& z) const {
     controls X = unpack_path<T, n, M, unknowns>(z);

@@ -11,10 +11,15 @@
 ///   using scalar = T;  static constexpr int dof, unknowns;
 ///   bool predict(q, p, tau, z)            fresh predictor; false if no velocity belongs to p
 ///   void extrapolate(previous_z, z)        predictor continuing the previous step
-///   void residual(q, p, tau, z, F, J*)     F(z) and, if J is not null, dF/dz
-///   step_status finish(q, p, tau, z, u)    the end update at the solution z (an end_update:
+///   void residual(q, p, tau, z, F, J*, c*) F(z) and, if J is not null, dF/dz
+///   step_status finish(q, p, tau, z, u, c*) the end update at the solution z (an end_update:
 ///                                          increments where it can, so that compensated
 ///                                          summation can add them)
+///
+/// where c, if not null, holds the compensation terms of compensated summation: the step then
+/// starts from the state q + c.q, p + c.p, which the method's path and momentum rows use
+/// (path_method::from_start), so that a compensated step is the step from that sum and not from
+/// its rounded part.
 ///
 /// and optionally `end_momentum(x0, x1, tau, p1, opt)` for the two-step form.
 
@@ -288,7 +293,7 @@ class step_skeleton {
     if (mem && mem->continues(q, p, tau)) {
       z = mem->z;
       method_.extrapolate(mem->z, z);
-      st = solve(q, p, tau, opt, z, &mem->jacobian);
+      st = solve(q, p, tau, opt, z, &mem->jacobian, carry);
       done = static_cast<bool>(st);
     }
     if (!done) {
@@ -297,11 +302,11 @@ class step_skeleton {
         return {step_failure::singular_jacobian, 0, 0};
       }
       if (mem) mem->jacobian.valid = false;
-      st = solve(q, p, tau, opt, z, mem ? &mem->jacobian : nullptr);
+      st = solve(q, p, tau, opt, z, mem ? &mem->jacobian : nullptr, carry);
     }
     end_update<T, n> u;
     if (st) {
-      const step_status end = method_.finish(q, p, tau, z, u);
+      const step_status end = method_.finish(q, p, tau, z, u, carry);
       if (!end) st.reason = end.reason;
     }
     if (!st) {
@@ -336,8 +341,8 @@ class step_skeleton {
  private:
   /// Simplified Newton on the method's residual; round-off is judged against eps |q|.
   step_status solve(const V& q, const V& p, const T& tau, const newton_options<T>& opt, unknowns& z,
-                    jacobian_cache<T, N>* jac) const {
-    auto residual = [&](const unknowns& zz, unknowns& F, mat<T, N>* J) { method_.residual(q, p, tau, zz, F, J); };
+                    jacobian_cache<T, N>* jac, const phase_carry<T, n>* carry) const {
+    auto residual = [&](const unknowns& zz, unknowns& F, mat<T, N>* J) { method_.residual(q, p, tau, zz, F, J, carry); };
     const T scale = std::numeric_limits<T>::epsilon() * q.template lpNorm<Eigen::Infinity>();
     return newton_solve_simplified<N, T>(residual, z, opt, scale, jac);
   }
