@@ -96,10 +96,17 @@ struct path_weights {
   static path_weights from_nodes(const std::array<T, M + 1>& c) {
     path_weights w;
     w.c = c;
-    w.D0 = to_matrix<T, M + 1>(differentiation_weights_at<0, Basis>(c));
+    // In the Lagrange basis D0 = D0^{-1} = I exactly (l_j(c_i) = delta_ij): no evaluation, no
+    // inversion and no products with them, which also keeps their code out of every engine.
+    if constexpr (node_values) {
+      w.D0 = W::Identity();
+      w.D0inv = W::Identity();
+    } else {
+      w.D0 = to_matrix<T, M + 1>(differentiation_weights_at<0, Basis>(c));
+      w.D0inv = inverse_of<T, M + 1>(w.D0);
+    }
     w.D1 = to_matrix<T, M + 1>(differentiation_weights_at<1, Basis>(c));
     w.D2 = to_matrix<T, M + 1>(differentiation_weights_at<2, Basis>(c));
-    w.D0inv = inverse_of<T, M + 1>(w.D0);
     w.extrapolate = extrapolation(w.D0, w.D0inv, w.c);
     return w;
   }
@@ -143,9 +150,16 @@ struct path_weights {
             l *= (t - c[static_cast<std::size_t>(j)]) / (c[static_cast<std::size_t>(k)] - c[static_cast<std::size_t>(j)]);
         L(i, k) = l;
       }
-    W values = L * D0;  // values at 1 + c_i of the path with controls e_j
+    W values;  // values at 1 + c_i of the path with controls e_j
+    if constexpr (node_values)
+      values = L;
+    else
+      values = L * D0;
     for (int i = 0; i <= M; ++i) values.row(i) -= D0.row(M);
-    return D0inv * values;
+    if constexpr (node_values)
+      return values;
+    else
+      return D0inv * values;
   }
 };
 
