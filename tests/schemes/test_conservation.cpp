@@ -171,6 +171,43 @@ TEMPLATE_LIST_TEST_CASE("add_compensated is exact where plain summation loses ev
   }
 }
 
+TEMPLATE_LIST_TEST_CASE("two_sum and the double-length add_compensated keep every bit", "[compensated]",
+                        geomint::test::integrator_scalar_types) {
+  // Expected values by arithmetic in cpp_bin_float_100: exact for double; for cpp_bin_float_50
+  // exact for two_sum and within 2^-320 |x| for the long sum, far below its bound.
+  using T = TestType;
+  using R = geomint::test::cpp_bin_float_100;
+  const T eps = std::numeric_limits<T>::epsilon();
+  // two_sum: s + e = a + b exactly, s the rounded sum, for magnitudes far apart and crossing.
+  for (const auto& [a, b] : {std::pair<T, T>(T(1), eps / T(3)), std::pair<T, T>(T(1) / T(3), T(-2) / T(7)),
+                             std::pair<T, T>(eps / T(5), T(-7) / T(3)), std::pair<T, T>(T(3), T(-3))}) {
+    T s, e;
+    two_sum(a, b, s, e);
+    CHECK(R(s) + R(e) == R(a) + R(b));
+    CHECK(s == T(a + b));
+  }
+  // add_compensated(x, carry, dx, dx_lo): 10^4 increments known to twice the precision
+  // (dx + dx_lo = 1/10 + 1/7 in about 2 p bits) onto x = 1. The exact sum is off by the small
+  // terms' roundings alone, each below eps^2 |x| (here |x| < 2500): in all under 10^4 eps^2 2500.
+  const T tenth = T(1) / T(10);
+  const T dx_lo = T(T(1) / T(7)) * eps;  // a part below the last bit of dx
+  vec<T, 1> x(T(1)), carry(T(0));
+  R exact = R(1);
+  const long count = 10000;
+  for (long k = 0; k < count; ++k) {
+    add_compensated(x, carry, vec<T, 1>(tenth), vec<T, 1>(dx_lo));
+    exact += R(tenth) + R(dx_lo);
+  }
+  const R error = abs(R(x[0]) + R(carry[0]) - exact);
+  INFO("error " << static_cast<double>(error));
+  CHECK(error <= R(count) * R(eps) * R(eps) * R(2500));
+  CHECK(abs(R(x[0]) - exact) <= R(eps) * R(2500));  // x is the sum to the last bit or so
+  // The single-length add_compensated cannot keep dx_lo: it loses about count |dx_lo|.
+  vec<T, 1> y(T(1)), carry_y(T(0));
+  for (long k = 0; k < count; ++k) add_compensated(y, carry_y, vec<T, 1>(T(tenth + dx_lo)));
+  CHECK(abs(R(y[0]) + R(carry_y[0]) - exact) > R(count) * R(eps) * R(eps) * R(2500));
+}
+
 TEMPLATE_LIST_TEST_CASE("compensated and plain steps agree to rounding", "[compensated]",
                         geomint::test::integrator_scalar_types) {
   // The two runs solve the same equations and differ only in how the increments are added, so
@@ -200,6 +237,7 @@ TEMPLATE_LIST_TEST_CASE("compensated and plain steps agree to rounding", "[compe
     CHECK((a.q[0] != b.q[0] || a.p[0] != b.p[0]));  // the compensation did change the rounding
   };
   check_scheme(lpf<4, gauss_interior>{});
+  check_scheme(lpf_fixed_point<4>{});
   check_scheme(galerkin_vi<3>{});
   check_scheme(midpoint_vi{});
 }

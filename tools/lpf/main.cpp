@@ -28,7 +28,7 @@ const char* usage =
     "galerkin on the built-in free systems, in 16 and 50 digits.\n"
     "lpf-fixed-point is lpf --nodes gauss-interior --basis lagrange on a natural system in its\n"
     "fixed-point form (no Jacobian; coefficients exactly symplectic in the scalar), on harmonic,\n"
-    "pendulum and kepler, with the m and digits of lpf; it takes no --nodes or --basis.\n"
+    "pendulum and kepler, with the m and digits of lpf.\n"
     "Defaults: harmonic q0=1,qdot0=1; pendulum q0=1,qdot0=0; kepler q0=(0.5,0),qdot0=(0,sqrt 3);\n"
     "charged q0=(1,0),qdot0=(0,1); scheme lpf, equispaced, lagrange, m=2, tau=0.1, steps=100.\n"
     "Constrained systems: circle (L = 1/2|qdot|^2, f = |q|^2 - 1; q0=(1,0), p0=(0,1)) with --scheme\n"

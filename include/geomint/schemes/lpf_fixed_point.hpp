@@ -24,6 +24,11 @@
 /// rounded. The stage equations are solved by fixed-point iteration (no Jacobian, s force
 /// evaluations per iteration), iterated until the increments stop changing, so that no
 /// iteration error is left that depends smoothly on the state.
+///
+/// With compensated summation in a built-in floating type the step also keeps the two roundings
+/// that otherwise grow like t instead of Brouwer's t^(1/2) out of the result: each stage offset
+/// is added to the exact product tau (c_i v + ...) (fma), and the increments of q and p are
+/// formed to twice the working precision before the compensated sum (stage_point, exact_update).
 
 #include <array>
 #include <atomic>
@@ -31,6 +36,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "geomint/core/basis.hpp"
 #include "geomint/core/nodes.hpp"
@@ -159,9 +165,11 @@ class lpf_fixed_point_engine {
     // Compensated summation: the state is (q + carry.q, p + carry.p). The stages and the update
     // see the carried parts (as in IRKGL16), so that the increments are those of the state the
     // carry stands for, not of its rounding: stage i is q + (offset_i + tau (c_i v + M^{-1} z_i))
-    // with offset_i = carry.q + tau c_i M^{-1} carry.p (zero without compensation).
+    // with offset_i = carry.q + tau c_i M^{-1} carry.p (zero without compensation), the offset
+    // added to the exact product in built-in floating types (stage_point).
     const V dv = carry ? V(minv_ * carry->p) : V::Zero();
     stage_terms terms;
+    terms.exact_offsets = std::is_floating_point_v<T> && carry;
     for (int i = 0; i < S; ++i) {
       const auto I = static_cast<std::size_t>(i);
       terms.hb[I] = tau * k_.b[I];
@@ -192,8 +200,12 @@ class lpf_fixed_point_engine {
     const V dq = tau * V(v + V(dv + minv_ * se));
     phase_carry<T, n> carry_next;
     if (carry) carry_next = *carry;
-    q1 = apply_end_update<T, n>(q, dq, true, carry ? &carry_next.q : nullptr);
-    p1 = apply_end_update<T, n>(p, dp, true, carry ? &carry_next.p : nullptr);
+    if (terms.exact_offsets) {
+      exact_update(q, p, v, V(dv + minv_ * se), tau, F, q1, p1, carry_next);
+    } else {
+      q1 = apply_end_update<T, n>(q, dq, true, carry ? &carry_next.q : nullptr);
+      p1 = apply_end_update<T, n>(p, dp, true, carry ? &carry_next.p : nullptr);
+    }
     if (carry) *carry = carry_next;
     if (solution)
       for (int i = 0; i < S; ++i) solution->template segment<n>(i * n) = F[static_cast<std::size_t>(i)];
@@ -205,11 +217,58 @@ class lpf_fixed_point_engine {
   }
 
  private:
-  /// What every sweep of one step reuses: tau b_i, c_i v and the stage offsets of the carry.
+  /// What every sweep of one step reuses: tau b_i, c_i v and the stage offsets of the carry;
+  /// exact_offsets: a compensated step in a built-in floating type (below).
   struct stage_terms {
     std::array<T, S> hb;
     std::array<V, S> cv, offset;
+    bool exact_offsets = false;
   };
+
+  /// The stage point q + (offset_i + tau s): with exact_offsets the offset is added to the exact
+  /// product tau s (one rounding, fma) instead of to its rounding. Measured (geomint-brouwer,
+  /// docs/results/long_runs.md): that second rounding, in every stage of every sweep, is what
+  /// made the compensated energy error grow faster than Brouwer's t^(1/2).
+  static V stage_point(const V& q, const V& offset, const T& tau, const V& s, bool exact_offsets) {
+    if constexpr (std::is_floating_point_v<T>) {
+      if (exact_offsets) {
+        V Q;
+        for (int r = 0; r < n; ++r) Q[r] = q[r] + std::fma(tau, s[r], offset[r]);
+        return Q;
+      }
+    }
+    return q + V(offset + tau * s);
+  }
+
+  /// The compensated update with increments to twice the working precision (built-in floating
+  /// types): dp = sum_i F_i accumulated with two_sum, dq = tau (v + rest) with v + rest by
+  /// two_sum and the product by fma, both added to (q, p) and their carries by the
+  /// double-length add_compensated (solvers/phase_state.hpp). Rounding each increment to one
+  /// scalar before the compensated sum left a drift above Brouwer's law (long_runs.md).
+  static void exact_update(const V& q, const V& p, const V& v, const V& rest, const T& tau, const std::array<V, S>& F,
+                           V& q1, V& p1, phase_carry<T, n>& carry) {
+    if constexpr (std::is_floating_point_v<T>) {
+      V dp = V::Zero(), dp_lo = V::Zero(), dq, dq_lo;
+      for (int r = 0; r < n; ++r) {
+        for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
+          T sum, err;
+          two_sum(dp[r], F[I][r], sum, err);
+          dp[r] = sum;
+          dp_lo[r] += err;
+        }
+        T w, w_lo;
+        two_sum(v[r], rest[r], w, w_lo);
+        dq[r] = tau * w;
+        dq_lo[r] = std::fma(tau, w, -dq[r]) + tau * w_lo;
+      }
+      q1 = q;
+      p1 = p;
+      add_compensated(q1, carry.q, dq, dq_lo);
+      add_compensated(p1, carry.p, dp, dp_lo);
+    } else {
+      (void)q, (void)p, (void)v, (void)rest, (void)tau, (void)F, (void)q1, (void)p1, (void)carry;
+    }
+  }
 
   /// f(x) = -grad V(x), one level of AD.
   V force(const V& x) const {
@@ -240,19 +299,19 @@ class lpf_fixed_point_engine {
       std::array<V, S> next;
       T change(0), size(0);
       for (int i = 0; i < S; ++i) {
-        V z = V::Zero();
-        for (int j = 0; j < S; ++j) z += k_.mu[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * F[static_cast<std::size_t>(j)];
         const auto I = static_cast<std::size_t>(i);
-        const V Q = q + V(terms.offset[I] + tau * V(terms.cv[I] + minv_ * z));
+        V z = V::Zero();
+        for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) z += k_.mu[I][J] * F[J];
+        const V Q = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + minv_ * z), terms.exact_offsets);
         next[I] = terms.hb[I] * force(Q);
-        if (!all_finite(next[static_cast<std::size_t>(i)])) {
+        if (!all_finite(next[I])) {
           st.reason = step_failure::non_finite_iterate;
           return st;
         }
         for (int r = 0; r < n; ++r) {
-          const T d = abs(next[static_cast<std::size_t>(i)][r] - F[static_cast<std::size_t>(i)][r]);
+          const T d = abs(next[I][r] - F[I][r]);
           if (d > change) change = d;
-          const T a = abs(next[static_cast<std::size_t>(i)][r]);
+          const T a = abs(next[I][r]);
           if (a > size) size = a;
         }
       }

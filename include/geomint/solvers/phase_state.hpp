@@ -35,6 +35,30 @@ void add_compensated(vec<T, n>& x, vec<T, n>& carry, const vec<T, n>& dx) {
   }
 }
 
+/// a + b = s + e exactly, s = a + b rounded (Knuth's TwoSum: six additions, any magnitudes).
+template <class T>
+void two_sum(const T& a, const T& b, T& s, T& e) {
+  s = a + b;
+  const T b_part = s - a;
+  const T a_part = s - b_part;
+  e = (a - a_part) + (b - b_part);
+}
+
+/// add_compensated for an increment known to twice the working precision, dx + dx_lo (a
+/// double-double, e.g. from two_sum and an exact product by fma): x + carry + dx + dx_lo is
+/// rounded into x, and carry keeps the rest, so that the increment's own rounding is not lost
+/// either. The only rounding left is that of the small terms (carry, dx_lo and the error of
+/// x + dx), about eps^2 |x|.
+template <class T, int n>
+void add_compensated(vec<T, n>& x, vec<T, n>& carry, const vec<T, n>& dx, const vec<T, n>& dx_lo) {
+  for (int i = 0; i < n; ++i) {
+    T s, e;
+    two_sum(x[i], dx[i], s, e);
+    const T small = e + (carry[i] + dx_lo[i]);
+    two_sum(s, small, x[i], carry[i]);
+  }
+}
+
 /// A point of the one-step (position-momentum) form.
 ///
 /// Time is never accumulated: t_k = t0 + (k - k0) tau, where (k0, t0) is the step and time at
