@@ -242,7 +242,8 @@ class lpf_fixed_point_engine {
 
   /// The compensated update with increments to twice the working precision (built-in floating
   /// types): dp = sum_i F_i accumulated with two_sum, dq = tau (v + rest) with v + rest by
-  /// two_sum and the product by fma, both added to (q, p) and their carries by the
+  /// two_sum and the product's rounding error by fma (TwoProduct, Ogita, Rump & Oishi 2005,
+  /// docs/references.md), both added to (q, p) and their carries by the
   /// double-length add_compensated (solvers/phase_state.hpp). Rounding each increment to one
   /// scalar before the compensated sum left a drift above Brouwer's law (long_runs.md).
   static void exact_update(const V& q, const V& p, const V& v, const V& rest, const T& tau, const std::array<V, S>& F,
