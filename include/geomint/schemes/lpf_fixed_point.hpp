@@ -197,12 +197,13 @@ class lpf_fixed_point_engine {
       dp += F[static_cast<std::size_t>(i)];
       se += k_.e[static_cast<std::size_t>(i)] * F[static_cast<std::size_t>(i)];
     }
-    const V dq = tau * V(v + V(dv + minv_ * se));
+    const V rest = dv + minv_ * se;
     phase_carry<T, n> carry_next;
     if (carry) carry_next = *carry;
     if (terms.exact_offsets) {
-      exact_update(q, p, v, V(dv + minv_ * se), tau, F, q1, p1, carry_next);
+      exact_update(q, p, v, rest, tau, F, q1, p1, carry_next);
     } else {
+      const V dq = tau * V(v + rest);
       q1 = apply_end_update<T, n>(q, dq, true, carry ? &carry_next.q : nullptr);
       p1 = apply_end_update<T, n>(p, dp, true, carry ? &carry_next.p : nullptr);
     }
@@ -248,7 +249,7 @@ class lpf_fixed_point_engine {
   /// scalar before the compensated sum left a drift above Brouwer's law (long_runs.md).
   static void exact_update(const V& q, const V& p, const V& v, const V& rest, const T& tau, const std::array<V, S>& F,
                            V& q1, V& p1, phase_carry<T, n>& carry) {
-    if constexpr (std::is_floating_point_v<T>) {
+    if constexpr (std::is_floating_point_v<T>) {  // (never called otherwise: exact_offsets)
       V dp = V::Zero(), dp_lo = V::Zero(), dq, dq_lo;
       for (int r = 0; r < n; ++r) {
         for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
