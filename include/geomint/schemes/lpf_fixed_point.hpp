@@ -192,17 +192,21 @@ class lpf_fixed_point_engine {
       if (mem) mem->valid = false;
       return st;
     }
-    V dp = V::Zero(), se = V::Zero();
-    for (int i = 0; i < S; ++i) {
-      dp += F[static_cast<std::size_t>(i)];
-      se += k_.e[static_cast<std::size_t>(i)] * F[static_cast<std::size_t>(i)];
-    }
+    V se = V::Zero();
+    for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) se += k_.e[I] * F[I];
     const V rest = dv + minv_ * se;
     phase_carry<T, n> carry_next;
     if (carry) carry_next = *carry;
-    if (terms.exact_offsets) {
-      exact_update(q, p, v, rest, tau, F, q1, p1, carry_next);
-    } else {
+    bool updated = false;
+    if constexpr (std::is_floating_point_v<T>) {
+      if (terms.exact_offsets) {
+        exact_update(q, p, v, rest, tau, F, q1, p1, carry_next);
+        updated = true;
+      }
+    }
+    if (!updated) {
+      V dp = V::Zero();
+      for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) dp += F[I];
       const V dq = tau * V(v + rest);
       q1 = apply_end_update<T, n>(q, dq, true, carry ? &carry_next.q : nullptr);
       p1 = apply_end_update<T, n>(p, dp, true, carry ? &carry_next.p : nullptr);
@@ -249,27 +253,23 @@ class lpf_fixed_point_engine {
   /// scalar before the compensated sum left a drift above Brouwer's law (long_runs.md).
   static void exact_update(const V& q, const V& p, const V& v, const V& rest, const T& tau, const std::array<V, S>& F,
                            V& q1, V& p1, phase_carry<T, n>& carry) {
-    if constexpr (std::is_floating_point_v<T>) {  // (never called otherwise: exact_offsets)
-      V dp = V::Zero(), dp_lo = V::Zero(), dq, dq_lo;
-      for (int r = 0; r < n; ++r) {
-        for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
-          T sum, err;
-          two_sum(dp[r], F[I][r], sum, err);
-          dp[r] = sum;
-          dp_lo[r] += err;
-        }
-        T w, w_lo;
-        two_sum(v[r], rest[r], w, w_lo);
-        dq[r] = tau * w;
-        dq_lo[r] = std::fma(tau, w, -dq[r]) + tau * w_lo;
+    V dp = V::Zero(), dp_lo = V::Zero(), dq, dq_lo;
+    for (int r = 0; r < n; ++r) {
+      for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
+        T sum, err;
+        two_sum(dp[r], F[I][r], sum, err);
+        dp[r] = sum;
+        dp_lo[r] += err;
       }
-      q1 = q;
-      p1 = p;
-      add_compensated(q1, carry.q, dq, dq_lo);
-      add_compensated(p1, carry.p, dp, dp_lo);
-    } else {
-      (void)q, (void)p, (void)v, (void)rest, (void)tau, (void)F, (void)q1, (void)p1, (void)carry;
+      T w, w_lo;
+      two_sum(v[r], rest[r], w, w_lo);
+      dq[r] = tau * w;
+      dq_lo[r] = std::fma(tau, w, -dq[r]) + tau * w_lo;
     }
+    q1 = q;
+    p1 = p;
+    add_compensated(q1, carry.q, dq, dq_lo);
+    add_compensated(p1, carry.p, dp, dp_lo);
   }
 
   /// f(x) = -grad V(x), one level of AD.

@@ -17,6 +17,15 @@ struct phase_carry {
   vec<T, n> p = vec<T, n>::Zero();
 };
 
+/// a + b = s + e exactly, s = a + b rounded (Knuth's TwoSum: six additions, any magnitudes).
+template <class T>
+void two_sum(const T& a, const T& b, T& s, T& e) {
+  s = a + b;
+  const T b_part = s - a;
+  const T a_part = s - b_part;
+  e = (a - a_part) + (b - b_part);
+}
+
 /// x + (carry + dx) rounded to the nearest scalar, and in carry what that rounding lost, exactly
 /// (Knuth's TwoSum: six additions, exact for any magnitudes, so also when p crosses zero and
 /// |dp| > |p|). Each component's x + carry is then the exact sum of the increments to within
@@ -27,21 +36,9 @@ template <class T, int n>
 void add_compensated(vec<T, n>& x, vec<T, n>& carry, const vec<T, n>& dx) {
   for (int i = 0; i < n; ++i) {
     const T y = dx[i] + carry[i];
-    const T s = x[i] + y;
-    const T y_part = s - x[i];
-    const T x_part = s - y_part;
-    carry[i] = (x[i] - x_part) + (y - y_part);
-    x[i] = s;
+    const T a = x[i];
+    two_sum(a, y, x[i], carry[i]);
   }
-}
-
-/// a + b = s + e exactly, s = a + b rounded (Knuth's TwoSum: six additions, any magnitudes).
-template <class T>
-void two_sum(const T& a, const T& b, T& s, T& e) {
-  s = a + b;
-  const T b_part = s - a;
-  const T a_part = s - b_part;
-  e = (a - a_part) + (b - b_part);
 }
 
 /// add_compensated for an increment known to twice the working precision, dx + dx_lo (a
