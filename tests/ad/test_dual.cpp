@@ -6,10 +6,14 @@
 /// the Euler-Lagrange Jacobian), over double and cpp_bin_float_50.
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include <Eigen/Dense>
+#include <boost/math/constants/constants.hpp>
 
 #include "catch.hpp"
 #include "geomint/ad/dual.hpp"
@@ -175,4 +179,51 @@ TEMPLATE_LIST_TEST_CASE("dual numbers: comparisons with plain scalars look at th
   CHECK(nonzero);
   CHECK(equal);
   CHECK_FALSE(above_one);
+}
+
+/// The joint sin and cos (sin_cos: one series and a square root in a multiprecision type)
+/// against the same functions in higher precision (150 digits for cpp_bin_float_100, 100 for
+/// cpp_bin_float_50): over a grid of [-20, 20] and next to every quadrant boundary k pi/4
+/// (|k| <= 40, where the choice of the evaluated function changes). The evaluated function is
+/// the library's; the other is sqrt(1 - s^2), whose error is the evaluated one's times
+/// |s / c| <= 9/8 plus the rounding of the square root: each error is bounded by the library's
+/// own sin and cos errors in T that way, plus 2 units of the last place. Large arguments and
+/// built-in types use the library functions unchanged, bit for bit.
+template <class T, class H>
+void check_sin_cos() {
+  using std::abs;
+  const T eps = std::numeric_limits<T>::epsilon();
+  int checked = 0;
+  auto check = [&](const T& x) {
+    const std::pair<T, T> sc = geomint::sin_cos(x);
+    const H hs = sin(H(x)), hc = cos(H(x));
+    const H library_s = abs(H(T(sin(x))) - hs), library_c = abs(H(T(cos(x))) - hc);
+    INFO("x = " << x);
+    // The derived value inherits the evaluated one's error times |s / c| <= 9/8 (|s| <= 3/4).
+    const H inherited = H(9) / H(8) * (library_s > library_c ? library_s : library_c);
+    CHECK(abs(H(sc.first) - hs) <= library_s + inherited + H(2 * eps) * abs(hs));
+    CHECK(abs(H(sc.second) - hc) <= library_c + inherited + H(2 * eps) * abs(hc));
+    ++checked;
+  };
+  const T quarter_pi = boost::math::constants::pi<T>() / T(4);
+  for (int k = -40; k <= 40; ++k)
+    for (int j = -3; j <= 3; ++j) check(T(T(k) * quarter_pi + T(j) * T(1000) * eps));
+  for (int i = -2000; i <= 2000; ++i) check(T(T(i) / T(100)));
+  REQUIRE(checked == 81 * 7 + 4001);
+  for (const T& x : {T(T(1) / eps), T(-T(1) / eps), T(std::int64_t(1) << 62)}) {
+    const std::pair<T, T> sc = geomint::sin_cos(x);
+    CHECK(sc.first == T(sin(x)));
+    CHECK(sc.second == T(cos(x)));
+  }
+}
+
+TEST_CASE("dual numbers: the joint sin and cos in multiprecision", "[ad][dual]") {
+  check_sin_cos<boost::multiprecision::cpp_bin_float_50, R>();
+  check_sin_cos<boost::multiprecision::cpp_bin_float_100, boost::multiprecision::number<boost::multiprecision::cpp_bin_float<150>>>();
+  for (int i = -2000; i <= 2000; ++i) {
+    const double x = double(i) / 100;
+    const std::pair<double, double> sc = geomint::sin_cos(x);
+    CHECK(sc.first == std::sin(x));
+    CHECK(sc.second == std::cos(x));
+  }
 }

@@ -1,4 +1,5 @@
 /// LPF on Gauss-interior nodes in the fixed-point Nystrom form (schemes/lpf_fixed_point.hpp).
+#include <array>
 #include <cmath>
 
 #include "catch.hpp"
@@ -164,6 +165,34 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: continuing steps and fresh steps solve
   }
   CHECK(abs(T(s.q[0] - fresh.q[0])) <= eps_tol<T>(64));
   CHECK(abs(T(s.p[0] - fresh.p[0])) <= eps_tol<T>(64));
+}
+
+TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: stop_on_rate saves sweeps and keeps the fixed point", "[lpf_fixed_point]",
+                        geomint::test::integrator_scalar_types) {
+  // With stop_on_rate a step ends when the contraction rate bounds the change left below eps,
+  // one sweep before the increments stop changing. Both runs reach the same fixed point: each
+  // step's iterate is within tolerance_ulps (64) eps of it, so after 20 steps the runs agree to
+  // 20 x 2 x 64 eps (exact mathematics: one fixed point), and the rate's stop takes fewer sweeps.
+  using T = TestType;
+  const auto [q0, v0] = kepler_start<T>();
+  std::array<long, 2> sweeps{};
+  std::array<vec<T, 2>, 2> q, p;
+  for (const bool stop_on_rate : {false, true}) {
+    integrator<lpf_fixed_point<8>, systems::kepler, T> I(systems::kepler{}, T(1) / T(8));
+    I.options().stop_on_rate = stop_on_rate;
+    auto s = I.initial_state(q0, v0);
+    const std::size_t k = stop_on_rate ? 1 : 0;
+    for (int step = 0; step < 20; ++step) {
+      const step_status st = I.try_step(s);
+      REQUIRE(st);
+      sweeps[k] += st.iterations;
+    }
+    q[k] = s.q;
+    p[k] = s.p;
+  }
+  CHECK(T((q[1] - q[0]).cwiseAbs().maxCoeff()) <= eps_tol<T>(2560));
+  CHECK(T((p[1] - p[0]).cwiseAbs().maxCoeff()) <= eps_tol<T>(2560));
+  CHECK(sweeps[1] < sweeps[0]);
 }
 
 TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: a step beyond the iteration's reach fails and leaves the state",

@@ -4,6 +4,7 @@
 /// Independent sources of the expected values: closed-form roots (sqrt 2; the intersection of
 /// x^2 + y^2 = 4 and x y = 1, x = (sqrt 6 + sqrt 2)/2, y = (sqrt 6 - sqrt 2)/2); equations built
 /// to have a singular Jacobian, no root, or a non-finite residual.
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -85,6 +86,37 @@ TEMPLATE_LIST_TEST_CASE("newton_solve_simplified: same root, and a reused factor
   REQUIRE(newton_solve_simplified<2, T>(residual, near, newton_options<T>{}, T(0), &cache));
   CHECK(jacobians == before);
   CHECK(abs_diff(near[0], w[0]) <= eps_tol<T>(16));
+}
+
+TEMPLATE_LIST_TEST_CASE("newton_solve_simplified: stop_on_rate stops when the rate bounds the error left", "[solvers]",
+                        geomint::test::integrator_scalar_types) {
+  // F(z) = z - 1 with the matrix 1 + g: every correction is the error times 1 / (1 + g), so the
+  // error contracts by exactly rho = g / (1 + g) per correction (exact mathematics). From
+  // z = 1 + eps^(1/8) with rho about eps^(1/4) the corrections are eps^(1/8 + k/4): without
+  // stop_on_rate the solve ends with the correction eps^(9/8) that confirms convergence (the
+  // one before, eps^(7/8), is above 64 eps); with it, one correction earlier, where rho times
+  // the correction (eps^(9/8)) is below eps. Either way the result is the root 1 to 2 eps.
+  using T = TestType;
+  using std::sqrt;
+  const T eps = std::numeric_limits<T>::epsilon();
+  const T g = sqrt(sqrt(eps)), start = T(1) + sqrt(sqrt(sqrt(eps)));
+  auto residual = [&](const vec<T, 1>& x, vec<T, 1>& F, mat<T, 1>* J) {
+    F[0] = x[0] - T(1);
+    if (J) (*J)(0, 0) = T(1) + g;
+  };
+  std::array<int, 2> iterations{};
+  for (const bool stop_on_rate : {false, true}) {
+    vec<T, 1> z(start);
+    newton_options<T> opt;
+    opt.stop_on_rate = stop_on_rate;
+    const step_status st = newton_solve_simplified<1, T>(residual, z, opt, T(0));
+    REQUIRE(st);
+    CHECK(abs_diff(z[0], T(1)) <= eps_tol<T>(2));
+    iterations[stop_on_rate ? 1 : 0] = st.iterations;
+  }
+  CHECK(iterations[1] == iterations[0] - 1);
+  // The default: on in multiprecision, off in built-in types.
+  CHECK(newton_options<T>{}.stop_on_rate == !std::is_floating_point_v<T>);
 }
 
 TEMPLATE_LIST_TEST_CASE("Newton failures: singular Jacobian, no convergence, non-finite residual", "[solvers]",

@@ -285,8 +285,9 @@ class lpf_fixed_point_engine {
 
   /// F <- tau b_i f(Q_i(F)) until the increments stop changing: exactly (a fixed point in T),
   /// or, once below eps^(2/3) relative, when the change has grown twice in a row (the
-  /// round-off floor). A non-finite iterate, two growths in a row above that level, or the
-  /// iteration budget (sweep_budget) spent above `tolerance_ulps` eps is a failure.
+  /// round-off floor), or (opt.stop_on_rate) when the rate bounds the change left below eps. A
+  /// non-finite iterate, two growths in a row above that level, or the iteration budget
+  /// (sweep_budget) spent above `tolerance_ulps` eps is a failure.
   step_status iterate(const V& q, const T& tau, const stage_terms& terms, std::array<V, S>& F,
                       const newton_options<T>& opt) const {
     using std::abs;
@@ -320,6 +321,13 @@ class lpf_fixed_point_engine {
       F = next;
       if (change == T(0)) return st;
       const T scale = size + eps * q.template lpNorm<Eigen::Infinity>();
+      // As newton_options::stop_on_rate (multiprecision by default): the contraction rate says
+      // the change left after this sweep, rho / (1 - rho) times this one, is below eps, so the
+      // sweep that would only confirm it is saved.
+      if (opt.stop_on_rate && it > 1 && change < previous) {
+        const T rho = change / previous;
+        if (rho <= T(1) / T(8) && rho * change <= (T(1) - rho) * eps * scale) return st;
+      }
       if (change >= previous) {
         // Growing twice in a row: at the round-off floor the fixed point is reached; above it
         // the map is no contraction (tau beyond the iteration's reach).
