@@ -175,14 +175,11 @@ dual<T, N> chain(const dual<T, N>& x, const T& value, const T& slope) {
   return r;
 }
 
-/// The elementary functions. Each evaluates f and f' on the value through an unqualified call
-/// (std:: for built-in types, ADL for Boost.Multiprecision and for lower-level duals), so they
-/// nest to any depth. Derivatives are the textbook formulas (Abramowitz & Stegun, ch. 4).
-///
 namespace ad::detail {
 /// sqrt(a) for a in [1/2, 1] in a multiprecision type: the double square root refined by
 /// Newton's iteration y <- (y + a/y)/2, which doubles the correct bits each time, to the
-/// precision of T. A few times faster than Boost's cpp_bin_float sqrt at 50 digits.
+/// precision of T: two corrections at 50 digits, each a division, where Boost's cpp_bin_float
+/// sqrt works on the doubled integer mantissa.
 template <class T>
 T sqrt_near_one(const T& a) {
   using std::sqrt;
@@ -193,6 +190,10 @@ T sqrt_near_one(const T& a) {
 }
 }  // namespace ad::detail
 
+/// The elementary functions. Each evaluates f and f' on the value through an unqualified call
+/// (std:: for built-in types, ADL for Boost.Multiprecision and for lower-level duals), so they
+/// nest to any depth. Derivatives are the textbook formulas (Abramowitz & Stegun, ch. 4).
+///
 /// sin and cos together: each level of a nested dual needs both of the level below, so
 /// separate sin and cos would evaluate the innermost sin and cos 2^depth times; jointly, once
 /// each (in multiprecision these evaluations dominate a step).

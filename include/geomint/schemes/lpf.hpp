@@ -98,10 +98,10 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
         // values as the general rows below, without their products with zero).
         if (J) {
           const hessian_data<T, n> h = D::hessian(sys_, x, V::Zero());
-          const mat<T, n> mass = Sys::template mass_matrix<T>();
+          const mat<T, n> mass = Sys::template mass_matrix<T>(), E_a = -mass;
           F.template segment<n>(i * n) = tau2 * V(h.Lq - mass * a);
           for (int j = 1; j <= M; ++j)
-            J->template block<n, n>(i * n, (j - 1) * n) = (tau2 * w_.D0(i, j)) * h.Lqq + w_.D2(i, j) * mat<T, n>(-mass);
+            J->template block<n, n>(i * n, (j - 1) * n) = (tau2 * w_.D0(i, j)) * h.Lqq + w_.D2(i, j) * E_a;
         } else {
           F.template segment<n>(i * n) = tau2 * D::el_residual(sys_, x, V::Zero(), a);
         }

@@ -33,10 +33,10 @@ struct newton_options {
   int tolerance_ulps = 64;
   /// Simplified Newton: stop as soon as the contraction rate rho (<= 1/8) says the error left,
   /// rho / (1 - rho) times the last correction, is below eps, instead of making one more,
-  /// eps-sized correction to confirm it. In multiprecision that saves the dearest part of a
-  /// step (in 50 digits a fifth of the iterations), and eps is far below any accuracy asked.
-  /// In a built-in type the confirming correction is cheap and makes the converged iterate the
-  /// solution to round-off, which the long-run round-off studies rely on: off by default there.
+  /// eps-sized correction to confirm it. In multiprecision that saves the last residual of most
+  /// steps, the dearest part of a step, and eps is far below any accuracy asked. In a built-in
+  /// type the confirming correction is cheap and makes the converged iterate the solution to
+  /// round-off, which the long-run round-off studies rely on: off by default there.
   bool stop_on_rate = !std::is_floating_point_v<T>;
 
   void validate() const {
@@ -130,8 +130,8 @@ struct jacobian_cache {
 /// Convergence: the correction is at the eps level relative to `scale` + |z|, or below
 /// `tolerance_ulps` eps with a contraction rate rho <= 1/8 (so the error left, about rho times
 /// the correction, is at the eps level), or (opt.stop_on_rate) the error left that the rate
-/// predicts, rho / (1 - rho) times the correction, is below eps; or, below eps^(2/3), the correction has stopped
-/// contracting (round-off floor). The Jacobian is refreshed at the current iterate when the
+/// predicts, rho / (1 - rho) times the correction, is below eps; or, below eps^(2/3), the
+/// correction has stopped contracting (round-off floor). The Jacobian is refreshed at the current iterate when the
 /// iteration contracts by less than a factor 2 or too slowly to reach eps in four more steps.
 template <int N, class T, class Fn>
 step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt, const T& scale,
