@@ -93,27 +93,20 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
     for (int i = 1; i < M; ++i) {
       const V x = this->from_start(q, w_.template value<n>(Y, i), carry);
       const V a = combine(Y, w_.D2, i) / tau2;
-      if constexpr (natural_system<Sys>) {
-        // E = L_q(x) - M a needs no velocity, and E_v = 0: the D1 rows are left out (the same
-        // values as the general rows below, without their products with zero).
-        if (J) {
-          const hessian_data<T, n> h = D::hessian(sys_, x, V::Zero());
-          const mat<T, n> mass = Sys::template mass_matrix<T>(), E_a = -mass;
-          F.template segment<n>(i * n) = tau2 * V(h.Lq - mass * a);
-          for (int j = 1; j <= M; ++j)
-            J->template block<n, n>(i * n, (j - 1) * n) = (tau2 * w_.D0(i, j)) * h.Lqq + w_.D2(i, j) * E_a;
-        } else {
-          F.template segment<n>(i * n) = tau2 * D::el_residual(sys_, x, V::Zero(), a);
-        }
-        continue;
-      }
-      const V v = combine(Y, w_.D1, i) / tau;
+      // Natural systems: E = L_q(x) - M a needs no velocity and E_v = 0, so their rows form no
+      // D1 Y / tau and no product with the zero block (the same values).
+      V v = V::Zero();
+      if constexpr (!natural_system<Sys>) v = combine(Y, w_.D1, i) / tau;
       if (J) {
         const el_data<T, n> e = D::euler_lagrange(sys_, x, v, a);
         F.template segment<n>(i * n) = tau2 * e.E;
-        for (int j = 1; j <= M; ++j)
-          J->template block<n, n>(i * n, (j - 1) * n) =
-              (tau2 * w_.D0(i, j)) * e.Ex + (tau * w_.D1(i, j)) * e.Ev + w_.D2(i, j) * e.Ea;
+        for (int j = 1; j <= M; ++j) {
+          auto block = J->template block<n, n>(i * n, (j - 1) * n);
+          if constexpr (natural_system<Sys>)
+            block = (tau2 * w_.D0(i, j)) * e.Ex + w_.D2(i, j) * e.Ea;
+          else
+            block = (tau2 * w_.D0(i, j)) * e.Ex + (tau * w_.D1(i, j)) * e.Ev + w_.D2(i, j) * e.Ea;
+        }
       } else {
         F.template segment<n>(i * n) = tau2 * D::el_residual(sys_, x, v, a);
       }

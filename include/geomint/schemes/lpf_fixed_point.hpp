@@ -324,10 +324,8 @@ class lpf_fixed_point_engine {
       // As newton_options::stop_on_rate (multiprecision by default): the contraction rate says
       // the change left after this sweep, rho / (1 - rho) times this one, is below eps, so the
       // sweep that would only confirm it is saved.
-      if (opt.stop_on_rate && it > 1 && change < previous) {
-        const T rho = change / previous;
-        if (rho <= T(1) / T(8) && rho * change <= (T(1) - rho) * eps * scale) return st;
-      }
+      if (opt.stop_on_rate && it > 1 && change < previous && rate_bounds_error(T(change / previous), change, scale))
+        return st;
       if (change >= previous) {
         // Growing twice in a row: at the round-off floor the fixed point is reached; above it
         // the map is no contraction (tau beyond the iteration's reach).

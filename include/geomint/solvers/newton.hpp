@@ -77,6 +77,14 @@ T epsilon_two_thirds() {
   }
 }
 
+/// Whether an iteration contracting at rate rho (<= 1/8) has, after a change of `size`, at
+/// most eps `scale` left to go: rho / (1 - rho) size <= eps scale (the stop of
+/// newton_options::stop_on_rate, shared by simplified Newton and the fixed-point sweeps).
+template <class T>
+bool rate_bounds_error(const T& rho, const T& size, const T& scale) {
+  return rho <= T(1) / T(8) && rho * size <= (T(1) - rho) * std::numeric_limits<T>::epsilon() * scale;
+}
+
 /// Solves F(z) = 0 from z. `residual(z, F, J)` fills F and J = dF/dz.
 template <int N, class T, class Fn>
 step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt) {
@@ -183,8 +191,7 @@ step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_op
       if (rho > jc.rate) jc.rate = rho;
     }
     const bool converged = size <= eps * s || (size <= tol * s && (fresh || rho <= T(1) / T(8))) ||
-                           (opt.stop_on_rate && !fresh && it > 1 && rho <= T(1) / T(8) &&
-                            rho * size <= (T(1) - rho) * eps * s) ||
+                           (opt.stop_on_rate && !fresh && it > 1 && rate_bounds_error(rho, size, s)) ||
                            (it > 1 && size <= floor_level * s && size * T(2) > previous);  // round-off floor
     if (converged) {
       jc.valid = true;
