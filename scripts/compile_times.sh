@@ -2,12 +2,19 @@
 # Compile-time profile of one CMake preset: configures it into build/<preset>-times with a
 # compiler launcher that records the CPU time (user + system) of every compile and link, builds
 # the given targets (default: all) and prints the units by CPU time and the total. CPU time, not
-# wall time, so that the figures hold on a loaded machine.
-# Usage: bash scripts/compile_times.sh <preset> [target...]
+# wall time, so that the figures hold on a loaded machine. Arguments -DNAME=VALUE are cache
+# settings on top of the preset's (e.g. -DGEOMINT_TEST_SUITE_OPTIONS=-O1).
+# Usage: bash scripts/compile_times.sh <preset> [-DNAME=VALUE...] [target...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[ $# -ge 1 ] || { echo "usage: bash scripts/compile_times.sh <preset> [target...]" >&2; exit 2; }
+usage="usage: bash scripts/compile_times.sh <preset> [-DNAME=VALUE...] [target...]"
+[ $# -ge 1 ] || { echo "$usage" >&2; exit 2; }
 preset=$1; shift
+settings=()
+while [ $# -gt 0 ] && [[ "$1" == -D* ]]; do
+  [[ "$1" == -D?*=* ]] || { echo "compile_times.sh: '$1' is not -DNAME=VALUE" >&2; echo "$usage" >&2; exit 2; }
+  settings+=("$1"); shift
+done
 build="build/${preset}-times"
 log="$PWD/$build/compile_times.log"
 mkdir -p "$build"
@@ -22,7 +29,7 @@ LAUNCHER
 chmod +x "$launcher"
 rm -f "$log"
 cmake --preset "$preset" -B "$build" -DCMAKE_CXX_COMPILER_LAUNCHER="$launcher" \
-      -DCMAKE_CXX_LINKER_LAUNCHER="$launcher" > /dev/null
+      -DCMAKE_CXX_LINKER_LAUNCHER="$launcher" "${settings[@]}" > /dev/null
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
 GEOMINT_TIMES_LOG="$log" cmake --build "$build" -j2 "${targets[@]}"
