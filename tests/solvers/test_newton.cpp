@@ -109,6 +109,7 @@ TEMPLATE_LIST_TEST_CASE("newton_solve_simplified: stop_on_rate stops when the ra
     vec<T, 1> z(start);
     newton_options<T> opt;
     opt.stop_on_rate = stop_on_rate;
+    opt.double_jacobian = false;  // the matrix 1 + g exactly, so the rate is exactly rho
     const step_status st = newton_solve_simplified<1, T>(residual, z, opt, T(0));
     REQUIRE(st);
     CHECK(abs_diff(z[0], T(1)) <= eps_tol<T>(2));
@@ -117,6 +118,72 @@ TEMPLATE_LIST_TEST_CASE("newton_solve_simplified: stop_on_rate stops when the ra
   CHECK(iterations[1] == iterations[0] - 1);
   // The default: on in multiprecision, off in built-in types.
   CHECK(newton_options<T>{}.stop_on_rate == !std::is_floating_point_v<T>);
+}
+
+TEMPLATE_LIST_TEST_CASE("newton_solve_simplified: a matrix factorised in double keeps the scalar's precision",
+                        "[solvers]", geomint::test::integrator_scalar_types) {
+  // The closed-form root of circle_hyperbola (exact mathematics), reached to T's precision with
+  // the Newton matrix rounded to double (the default in multiprecision): the residual in T
+  // decides the solution, the double matrix only how fast it is reached.
+  using T = TestType;
+  using std::sqrt;
+  constexpr bool multiprecision = !std::is_floating_point_v<T>;
+  CHECK(newton_options<T>{}.double_jacobian == multiprecision);
+  auto residual = [](const vec<T, 2>& x, vec<T, 2>& F, mat<T, 2>* J) { circle_hyperbola<T>(x, F, J); };
+  jacobian_cache<T, 2> cache;
+  vec<T, 2> w(T(2), T(1) / T(2));
+  const step_status st = newton_solve_simplified<2, T>(residual, w, newton_options<T>{}, T(0), &cache);
+  REQUIRE(st);
+  CHECK(cache.in_double == multiprecision);
+  const T s6 = sqrt(T(6)), s2 = sqrt(T(2));
+  CHECK(abs_diff(w[0], T((s6 + s2) / T(2))) <= eps_tol<T>(16));
+  CHECK(abs_diff(w[1], T((s6 - s2) / T(2))) <= eps_tol<T>(16));
+  if constexpr (multiprecision) {
+    // Fallbacks to T, each still reaching the exact root: (a) a matrix beyond double's range
+    // (10^400, F = 10^400 (z - 3)); (b) a matrix singular in double but not in T
+    // ([[1, 1], [1, 1 + 10^-30]]); (c) a residual beyond double's range at the start
+    // (z = 10^400, F = z - 3, J = 1): the correction cannot be formed in double.
+    const T big = T(pow(T(10), 400)), tiny = T(pow(T(10), -30));
+    {
+      vec<T, 1> z(T(0));
+      jacobian_cache<T, 1> c;
+      auto f = [&](const vec<T, 1>& x, vec<T, 1>& F, mat<T, 1>* J) {
+        F[0] = big * (x[0] - T(3));
+        if (J) (*J)(0, 0) = big;
+      };
+      REQUIRE(newton_solve_simplified<1, T>(f, z, newton_options<T>{}, T(0), &c));
+      CHECK_FALSE(c.in_double);
+      CHECK(abs_diff(z[0], T(3)) <= eps_tol<T>(8));
+    }
+    {
+      // Root of x + y = 2, x + (1 + d) y = 2 + d: x = y = 1.
+      vec<T, 2> z(T(0), T(0));
+      jacobian_cache<T, 2> c;
+      auto f = [&](const vec<T, 2>& x, vec<T, 2>& F, mat<T, 2>* J) {
+        F[0] = x[0] + x[1] - T(2);
+        F[1] = x[0] + (T(1) + tiny) * x[1] - (T(2) + tiny);
+        if (J) *J << T(1), T(1), T(1), T(1) + tiny;
+      };
+      REQUIRE(newton_solve_simplified<2, T>(f, z, newton_options<T>{}, T(0), &c));
+      CHECK_FALSE(c.in_double);
+      // The system's condition is about 4 / d = 4 10^30: the root to 16 / d eps.
+      const T bound = T(16) * std::numeric_limits<T>::epsilon() / tiny;
+      CHECK(abs_diff(z[0], T(1)) <= bound);
+      CHECK(abs_diff(z[1], T(1)) <= bound);
+    }
+    {
+      vec<T, 1> z(big);
+      jacobian_cache<T, 1> c;
+      auto f = [&](const vec<T, 1>& x, vec<T, 1>& F, mat<T, 1>* J) {
+        F[0] = x[0] - T(3);
+        if (J) (*J)(0, 0) = T(1);
+      };
+      const step_status s3 = newton_solve_simplified<1, T>(f, z, newton_options<T>{}, T(0), &c);
+      REQUIRE(s3);
+      CHECK_FALSE(c.in_double);
+      CHECK(abs_diff(z[0], T(3)) <= eps_tol<T>(8) * big);
+    }
+  }
 }
 
 TEMPLATE_LIST_TEST_CASE("Newton failures: singular Jacobian, no convergence, non-finite residual", "[solvers]",

@@ -54,15 +54,19 @@ T tolerance_of(long knob) {
 }
 
 /// A geomint scheme; `compensated`: compensated summation of the q, p update
-/// (integrator::set_compensated_summation).
+/// (integrator::set_compensated_summation); `stop_on_rate`: newton_options::stop_on_rate on
+/// (the default of multiprecision scalars) also in double, where by default the iteration goes
+/// on until its correction stops changing (for the round-off behaviour of long runs).
 template <class P, class Scheme, class T>
-method<T, P::n> geomint_method(std::string name, long first_steps, bool compensated) {
+method<T, P::n> geomint_method(std::string name, long first_steps, bool compensated, bool stop_on_rate = false) {
   constexpr int n = P::n;
   method<T, n> m{std::move(name), false, knob_kind::steps, first_steps, {}};
-  m.run = [compensated](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& p, const monitor_fn<T, n>* mon) -> long {
+  m.run = [compensated, stop_on_rate](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& p,
+                                      const monitor_fn<T, n>* mon) -> long {
     using I = integrator<Scheme, typename P::sys, T>;
     I integ(typename P::sys{}, T(t_end / T(steps)));
     integ.set_compensated_summation(compensated);
+    if (stop_on_rate) integ.options().stop_on_rate = true;
     typename I::state s;
     for (int i = 0; i < n; ++i) {
       s.q[i] = q[std::size_t(i)];

@@ -26,6 +26,16 @@ std::array<arr<T, Sys::dof>, 2> initial_data() {
   return out;
 }
 
+/// f = -grad V from the system's own gradient (Sys::potential_gradient, mechanics/systems.hpp):
+/// the force the explicit peers evaluate is the one geomint's schemes evaluate.
+template <class Sys, class T>
+void force(const arr<T, Sys::dof>& q, arr<T, Sys::dof>& f) {
+  vec<T, Sys::dof> x;
+  for (int i = 0; i < Sys::dof; ++i) x[i] = q[static_cast<std::size_t>(i)];
+  const vec<T, Sys::dof> g = Sys::template potential_gradient<T>(x);
+  for (int i = 0; i < Sys::dof; ++i) f[static_cast<std::size_t>(i)] = -g[i];
+}
+
 /// Pendulum qddot = -sin q from theta0 = 1 at rest (systems::pendulum::initial_data).
 struct pendulum_problem {
   using sys = systems::pendulum;
@@ -41,10 +51,7 @@ struct pendulum_problem {
     return p[0] * p[0] / T(2) + (T(1) - cos(q[0]));
   }
   template <class T>
-  static void force(const arr<T, n>& q, arr<T, n>& f) {
-    using std::sin;
-    f[0] = -sin(q[0]);
-  }
+  static void force(const arr<T, n>& q, arr<T, n>& f) { workprecision::force<sys>(q, f); }
   template <class R>
   static analysis::closed_form_state<R, n> exact(const R& t) { return analysis::pendulum_from_rest<R>(R(1), t); }
 };
@@ -64,13 +71,7 @@ struct kepler_problem {
     return (p[0] * p[0] + p[1] * p[1]) / T(2) - T(1) / sqrt(q[0] * q[0] + q[1] * q[1]);
   }
   template <class T>
-  static void force(const arr<T, n>& q, arr<T, n>& f) {
-    using std::sqrt;
-    const T r2 = q[0] * q[0] + q[1] * q[1];
-    const T s = T(1) / (r2 * sqrt(r2));
-    f[0] = -q[0] * s;
-    f[1] = -q[1] * s;
-  }
+  static void force(const arr<T, n>& q, arr<T, n>& f) { workprecision::force<sys>(q, f); }
   template <class R>
   static analysis::closed_form_state<R, n> exact(const R& t) { return analysis::kepler_from_pericentre<R>(R(1) / R(2), t); }
 };

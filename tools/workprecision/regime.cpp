@@ -43,6 +43,10 @@ std::vector<method<T, P::n>> methods_16(bool compensated) {
   all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8", 500, compensated));
   all.push_back(geomint_method<P, lpf_fixed_point<10>, T>("lpf-fixed-point-m10", 300, compensated));
   all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12", 300, compensated));
+  // The same with newton_options::stop_on_rate (the sweep that only confirms convergence saved).
+  all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8-stop-on-rate", 500, compensated, true));
+  all.push_back(geomint_method<P, lpf_fixed_point<10>, T>("lpf-fixed-point-m10-stop-on-rate", 300, compensated, true));
+  all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12-stop-on-rate", 300, compensated, true));
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
       "odeint-symplectic_rkn_sb3a_mclachlan", 4000));
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(

@@ -79,6 +79,13 @@ concept static_potential = requires(const vec<S, Sys::dof>& q) {
   { Sys::template potential<S>(q) } -> std::same_as<S>;
   { Sys::template mass_matrix<S>() } -> std::convertible_to<mat<S, Sys::dof>>;
 };
+/// A natural system that supplies grad V itself (optional): `template <class S> static
+/// geomint::vec<S, dof> potential_gradient(const geomint::vec<S, dof>& q)`. The integrators then
+/// evaluate forces with it instead of differentiating the potential (AD), which also forms V.
+template <class Sys, class S>
+concept supplies_potential_gradient = requires(const vec<S, Sys::dof>& q) {
+  { Sys::template potential_gradient<S>(q) } -> std::convertible_to<vec<S, Sys::dof>>;
+};
 template <class Sys, class S>
 concept member_potential = requires(const Sys& s, const vec<S, Sys::dof>& q) { s.template potential<S>(q); };
 
@@ -232,6 +239,31 @@ struct lagrangian_derivatives {
     }
   }
 
+  /// L_q alone. Natural systems: -grad V(x), from the system's potential_gradient if it supplies
+  /// one, else one level of AD on V (its gradient without forming L). Others: one level of AD
+  /// on L.
+  static V lagrangian_q(const Sys& sys, const V& x, const V& v) {
+    if constexpr (natural_system<Sys> && mechanics::detail::supplies_potential_gradient<Sys, T>) {
+      return V(-V(Sys::template potential_gradient<T>(x)));
+    } else if constexpr (natural_system<Sys>) {
+      return ad_potential_force(x);
+    } else {
+      return gradient(sys, x, v).Lq;
+    }
+  }
+
+  /// -grad V(x) of a natural system by one level of AD on V, whether or not the system supplies
+  /// its gradient (the independent value potential_gradient_defect compares against).
+  static V ad_potential_force(const V& x) {
+    using D = dual<T, n>;
+    vec<D, n> qd;
+    for (int i = 0; i < n; ++i) qd[i] = D::variable(x[i], i);
+    const D pot = Sys::template potential<D>(qd);
+    V f;
+    for (int i = 0; i < n; ++i) f[i] = -pot.d[static_cast<std::size_t>(i)];
+    return f;
+  }
+
   /// Bytes of the fully nested Hessian duals of a natural system's position vector; above 64 KiB
   /// (half of Eigen's fixed-size stack limit) the Hessian is built column by column instead.
   static constexpr std::size_t full_hessian_bytes = sizeof(dual<dual<T, n>, n>) * static_cast<std::size_t>(n);
@@ -348,7 +380,7 @@ struct lagrangian_derivatives {
   static V el_residual(const Sys& sys, const V& x, const V& v, const V& a) {
     if constexpr (natural_system<Sys>) {
       const Mt M = Sys::template mass_matrix<T>();
-      return V(gradient(sys, x, v).Lq - M * a);
+      return V(lagrangian_q(sys, x, v) - M * a);
     } else {
       const hessian_data<T, n> h = hessian(sys, x, v);
       return V(h.Lq - h.Lvq * v - h.Lvv * a);
@@ -406,6 +438,27 @@ template <lagrangian_system Sys, class T>
 T energy_qv(const Sys& sys, const vec<T, Sys::dof>& q, const vec<T, Sys::dof>& qdot) {
   const auto g = lagrangian_derivatives<Sys, T>::gradient(sys, q, qdot);
   return T(qdot.dot(g.Lv) - g.L);
+}
+
+/// How far a natural system's own potential_gradient is from the gradient of its potential at q
+/// (AD on V): max_i |supplied_i - (grad V)_i| in units of eps max(1, |grad V|). A correct hook
+/// gives a few units (the two roundings); a wrong one gives a large number. Test your hook with it.
+template <natural_system Sys, class T>
+T potential_gradient_defect(const vec<T, Sys::dof>& q) {
+  static_assert(mechanics::detail::supplies_potential_gradient<Sys, T>,
+                "geomint::potential_gradient_defect: the system supplies no "
+                "`template <class S> static geomint::vec<S, dof> potential_gradient(const geomint::vec<S, dof>& q)`");
+  using std::abs;
+  constexpr int n = Sys::dof;
+  const vec<T, n> ad = -lagrangian_derivatives<Sys, T>::ad_potential_force(q);
+  const vec<T, n> supplied = Sys::template potential_gradient<T>(q);
+  T largest(0), size(1);
+  for (int i = 0; i < n; ++i) {
+    const T d = abs(T(supplied[i] - ad[i]));
+    if (d > largest) largest = d;
+    if (abs(ad[i]) > size) size = abs(ad[i]);
+  }
+  return T(largest / (std::numeric_limits<T>::epsilon() * size));
 }
 
 }  // namespace geomint

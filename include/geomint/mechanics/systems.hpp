@@ -37,6 +37,12 @@ struct pendulum : natural<pendulum, 1> {
     using std::cos;
     return S(1) - cos(q[0]);
   }
+  /// grad V = sin theta: one sine per force, where AD on V also forms the cosine.
+  template <class S>
+  static vec<S, 1> potential_gradient(const vec<S, 1>& q) {
+    using std::sin;
+    return vec<S, 1>(S(sin(q[0])));
+  }
   template <class T>
   static mat<T, 1> mass_matrix() { return mat<T, 1>::Identity(); }
 };
@@ -56,6 +62,14 @@ struct kepler : natural<kepler, 2> {
   static S potential(const vec<S, 2>& q) {
     using std::sqrt;
     return S(-1) / sqrt(q[0] * q[0] + q[1] * q[1]);
+  }
+  /// grad V = q / |q|^3.
+  template <class S>
+  static vec<S, 2> potential_gradient(const vec<S, 2>& q) {
+    using std::sqrt;
+    const S r2 = q[0] * q[0] + q[1] * q[1];
+    const S s = S(1) / S(r2 * sqrt(r2));
+    return vec<S, 2>(S(q[0] * s), S(q[1] * s));
   }
   template <class T>
   static mat<T, 2> mass_matrix() { return mat<T, 2>::Identity(); }

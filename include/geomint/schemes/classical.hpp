@@ -84,7 +84,7 @@ class galerkin_method : public path_method<Sys, T, M, Basis> {
     V sum = V::Zero();
     for (int k = 0; k < Q; ++k) {
       const V x = this->from_start(q, combine(Y, B0_, k), carry), v = combine(Y, B1_, k) / tau;
-      sum += qw_[k] * D::gradient(sys_, x, v).Lq;
+      sum += qw_[k] * D::lagrangian_q(sys_, x, v);
     }
     u.p = tau * sum;
     return {};

@@ -128,7 +128,7 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
       V sb = V::Zero(), sbeta = V::Zero();
       for (int i = 1; i < M; ++i) {
         const V x = this->from_start(q, w_.template value<n>(Y, i), carry);
-        const V f = D::gradient(sys_, x, V::Zero()).Lq;
+        const V f = D::lagrangian_q(sys_, x, V::Zero());
         sb += quad_b_[static_cast<std::size_t>(i - 1)] * f;
         sbeta += quad_beta_[static_cast<std::size_t>(i - 1)] * f;
       }

@@ -272,18 +272,11 @@ class lpf_fixed_point_engine {
     add_compensated(p1, carry.p, dp, dp_lo);
   }
 
-  /// f(x) = -grad V(x), one level of AD.
-  V force(const V& x) const {
-    using D = dual<T, n>;
-    vec<D, n> xd;
-    for (int i = 0; i < n; ++i) xd[i] = D::variable(x[i], i);
-    const D pot = Sys::template potential<D>(xd);
-    V f;
-    for (int i = 0; i < n; ++i) f[i] = -pot.d[static_cast<std::size_t>(i)];
-    return f;
-  }
+  /// f(x) = -grad V(x): the system's potential_gradient if it supplies one, else AD on V.
+  V force(const V& x) const { return lagrangian_derivatives<Sys, T>::lagrangian_q(sys_, x, V::Zero()); }
 
-  /// F <- tau b_i f(Q_i(F)) until the increments stop changing: exactly (a fixed point in T),
+  /// F <- tau b_i f(Q_i(F)) (Jacobi sweeps in built-in types, Gauss-Seidel in multiprecision)
+  /// until the increments stop changing: exactly (a fixed point in T),
   /// or, once below eps^(2/3) relative, when the change has grown twice in a row (the
   /// round-off floor), or (opt.stop_on_rate) when the rate bounds the change left below eps. A
   /// non-finite iterate, two growths in a row above that level, or the iteration budget
@@ -317,6 +310,11 @@ class lpf_fixed_point_engine {
           const T a = abs(next[I][r]);
           if (a > size) size = a;
         }
+        // Multiprecision: Gauss-Seidel, each stage sees the stages already updated in this sweep
+        // (about 15% fewer sweeps, 18% less time per step in 50 digits). Built-in types: Jacobi,
+        // whose S force evaluations are independent and overlap in the processor's pipeline
+        // (Gauss-Seidel measured 60% slower per step in double despite the fewer sweeps).
+        if constexpr (!std::is_floating_point_v<T>) F[I] = next[I];
       }
       F = next;
       if (change == T(0)) return st;

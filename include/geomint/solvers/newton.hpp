@@ -38,6 +38,14 @@ struct newton_options {
   /// type the confirming correction is cheap and makes the converged iterate the solution to
   /// round-off, which the long-run round-off studies rely on: off by default there.
   bool stop_on_rate = !std::is_floating_point_v<T>;
+  /// Simplified Newton in a multiprecision T: factorise the Newton matrix rounded to double and
+  /// solve for each correction in double from the residual in T (mixed-precision iterative
+  /// refinement; Kelley 2022, docs/references.md). The residual, and so the solution, keep T's
+  /// precision: the iteration only contracts at about kappa(J) 1e-16 per step instead of the
+  /// staleness of the matrix, while the LU and its solves cost double's arithmetic instead of
+  /// T's. The solver falls back to T where double cannot hold the matrix or the correction, or
+  /// where the double matrix stops the contraction. No effect in built-in types.
+  bool double_jacobian = !std::is_floating_point_v<T>;
 
   void validate() const {
     if (max_iterations < 1 || max_iterations > 100000)
@@ -125,8 +133,43 @@ step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& o
 template <class T, int N>
 struct jacobian_cache {
   lu_small<T, N> lu;
+  /// The factorisation of the matrix rounded to double (newton_options::double_jacobian), used
+  /// instead of `lu` when `in_double`.
+  lu_small<double, N> lu_double;
+  bool in_double = false;
   bool valid = false;
   T rate = T(0);
+
+  /// Factorises J, in double if `try_double` and J rounds to a finite double matrix that is not
+  /// singular there, else in T. False if J is singular in T.
+  bool factor(const mat<T, N>& J, bool try_double) {
+    in_double = false;
+    if constexpr (!std::is_floating_point_v<T>) {
+      if (try_double) {
+        const mat<double, N> Jd = J.template cast<double>();
+        if (all_finite(Jd) && lu_double.factor(Jd)) {
+          in_double = true;
+          return true;
+        }
+      }
+    } else {
+      (void)try_double;
+    }
+    return lu.factor(J);
+  }
+  /// dz = -J^{-1} F with the kept factorisation; false if dz is not finite.
+  bool correction(const vec<T, N>& F, vec<T, N>& dz) const {
+    if constexpr (!std::is_floating_point_v<T>) {
+      if (in_double) {
+        vec<double, N> d;
+        const vec<double, N> Fd = (-F).template cast<double>();
+        if (!all_finite(Fd) || !lu_double.solve(Fd, d)) return false;
+        dz = d.template cast<T>();
+        return true;
+      }
+    }
+    return lu.solve(vec<T, N>(-F), dz);
+  }
 };
 
 /// Simplified Newton for F(z) = 0 from z: the Jacobian is evaluated and factorised at the first
@@ -160,6 +203,9 @@ step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_op
   jc.valid = false;
   jc.rate = T(0);
   T previous(0);
+  // Whether the next factorisation may be in double (newton_options::double_jacobian); cleared
+  // for the rest of the solve when double fails it (below).
+  bool try_double = opt.double_jacobian;
   for (int it = 1; it <= opt.max_iterations; ++it) {
     st.iterations = it;
     const bool fresh = refresh;
@@ -169,14 +215,19 @@ step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_op
       return st;
     }
     if (fresh) {
-      if (!jc.lu.factor(J)) {
+      if (!jc.factor(J, try_double)) {
         st.reason = step_failure::singular_jacobian;  // J is finite (checked above)
         return st;
       }
       refresh = false;
     }
     vec<T, N> dz;
-    if (!jc.lu.solve(vec<T, N>(-F), dz)) {
+    if (!jc.correction(F, dz)) {
+      if (jc.in_double) {  // F or the correction beyond double's range: again in T, from here
+        try_double = false;
+        refresh = true;
+        continue;
+      }
       st.reason = step_failure::non_finite_iterate;
       return st;
     }
@@ -204,6 +255,7 @@ step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_op
     if (!fresh && it > 1) {
       const T rho2 = rho * rho;
       if (rho > T(1) / T(2) || rho2 * rho2 * size > eps * s) refresh = true;
+      if (rho > T(1) / T(2) && jc.in_double) try_double = false;  // double's matrix stalls it
     }
     previous = size;
   }
