@@ -2,9 +2,14 @@
 """Per-step cost table (markdown) from geomint-workprecision --csv files.
 
 usage: /usr/bin/python3 tools/workprecision_costs.py CSV...
+       /usr/bin/python3 tools/workprecision_costs.py --compare BEFORE.csv AFTER.csv
 For every method: the CPU time per step (median over its runs of cpu_seconds / steps) in each
 file, and the force evaluations per step where the method fixes them (compositions: one per
 stage). Columns follow the files in the order given (their summary line names them).
+--compare: two runs of the same problem and regime (e.g. two builds of the tool). Per method,
+the median over the runs with the same number of steps in both files of after / before CPU
+time, and how many such runs there are: ladders that end at different lengths do not move it,
+which they do to the medians of the first form (the cost per step depends on tau).
 """
 import csv
 import re
@@ -29,6 +34,25 @@ def read(path):
     return label, {k: statistics.median(v) for k, v in per_step.items()}
 
 
+def runs(path):
+    """(method, steps) -> cpu_seconds of one file."""
+    with open(path, newline="") as f:
+        data = [ln for ln in f.read().splitlines() if ln and not ln.startswith("#")]
+    return {(r["method"], int(r["steps"])): float(r["cpu_seconds"]) for r in csv.DictReader(data) if int(r["steps"]) > 0}
+
+
+def compare(before_path, after_path):
+    before, after = runs(before_path), runs(after_path)
+    ratios = {}
+    for key, t in after.items():
+        if key in before and before[key] > 0:
+            ratios.setdefault(key[0], []).append(t / before[key])
+    print("| method | after / before, CPU per step (median) | runs compared |")
+    print("|---|---|---|")
+    for m, r in ratios.items():
+        print(f"| {m} | {statistics.median(r):.2f} | {len(r)} |")
+
+
 def fmt(seconds):
     if seconds is None:
         return "-"
@@ -37,6 +61,12 @@ def fmt(seconds):
 
 
 def main(argv):
+    if len(argv) >= 2 and argv[1] == "--compare":
+        if len(argv) != 4:
+            print(__doc__, file=sys.stderr)
+            sys.exit(2)
+        compare(argv[2], argv[3])
+        return
     if len(argv) < 2:
         sys.exit(__doc__)
     tables = [read(p) for p in argv[1:]]
