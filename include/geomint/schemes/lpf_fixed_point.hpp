@@ -311,9 +311,9 @@ class lpf_fixed_point_engine {
           if (a > size) size = a;
         }
         // Multiprecision: Gauss-Seidel, each stage sees the stages already updated in this sweep
-        // (about 15% fewer sweeps, 18% less time per step in 50 digits). Built-in types: Jacobi,
-        // whose S force evaluations are independent and overlap in the processor's pipeline
-        // (Gauss-Seidel measured 60% slower per step in double despite the fewer sweeps).
+        // (fewer sweeps). Built-in types: Jacobi, whose S force evaluations are independent and
+        // overlap in the processor's pipeline (Gauss-Seidel's chain of dependent evaluations was
+        // slower per step in double despite the fewer sweeps).
         if constexpr (!std::is_floating_point_v<T>) F[I] = next[I];
       }
       F = next;

@@ -41,9 +41,9 @@ struct newton_options {
   /// Simplified Newton in a multiprecision T: factorise the Newton matrix rounded to double and
   /// solve for each correction in double from the residual in T (mixed-precision iterative
   /// refinement; Kelley 2022, docs/references.md). The residual, and so the solution, keep T's
-  /// precision: the iteration only contracts at about kappa(J) 1e-16 per step instead of the
-  /// staleness of the matrix, while the LU and its solves cost double's arithmetic instead of
-  /// T's. The solver falls back to T where double cannot hold the matrix or the correction, or
+  /// precision; each iteration contracts the error by about kappa(J) 1e-16 (plus the matrix's
+  /// staleness) instead of quadratically, while the LU and its solves cost double's arithmetic
+  /// instead of T's. The solver falls back to T where double cannot hold the matrix or the correction, or
   /// where the double matrix stops the contraction. No effect in built-in types.
   bool double_jacobian = !std::is_floating_point_v<T>;
 
@@ -142,7 +142,7 @@ struct jacobian_cache {
 
   /// Factorises J, in double if `try_double` and J rounds to a finite double matrix that is not
   /// singular there, else in T. False if J is singular in T.
-  bool factor(const mat<T, N>& J, bool try_double) {
+  bool factor(const mat<T, N>& J, [[maybe_unused]] bool try_double) {
     in_double = false;
     if constexpr (!std::is_floating_point_v<T>) {
       if (try_double) {
@@ -152,8 +152,6 @@ struct jacobian_cache {
           return true;
         }
       }
-    } else {
-      (void)try_double;
     }
     return lu.factor(J);
   }
