@@ -134,6 +134,7 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the sweep budget grows with the scalar
   const T tau = T(1) / T(4);
   const auto [q0, v0] = kepler_start<T>();
   integrator<lpf_fixed_point<2>, systems::kepler, T> A(systems::kepler{}, tau);
+  A.options().double_jacobian = false;  // the sweeps (multiprecision would take Newton steps)
   integrator<lpf<2, gauss_interior>, systems::kepler, T> B(systems::kepler{}, tau);
   auto a = A.initial_state(q0, v0);
   auto b = B.initial_state(q0, v0);
@@ -180,6 +181,7 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: stop_on_rate saves sweeps and keeps th
   for (const bool stop_on_rate : {false, true}) {
     integrator<lpf_fixed_point<8>, systems::kepler, T> I(systems::kepler{}, T(1) / T(8));
     I.options().stop_on_rate = stop_on_rate;
+    I.options().double_jacobian = false;  // the sweeps
     auto s = I.initial_state(q0, v0);
     const std::size_t k = stop_on_rate ? 1 : 0;
     for (int step = 0; step < 20; ++step) {
@@ -201,6 +203,7 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: a step beyond the iteration's reach fa
   // is no contraction there, so the iteration must report failure, not return a step.
   using T = TestType;
   integrator<lpf_fixed_point<8>, systems::pendulum, T> I(systems::pendulum{}, T(20));
+  I.options().double_jacobian = false;  // the sweeps, whose reach this is
   auto s = I.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
   const auto before = s;
   const step_status st = I.try_step(s);
@@ -214,8 +217,49 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: a step beyond the iteration's reach fa
   const auto [q0, v0] = kepler_start<T>();
   integrator<lpf_fixed_point<8>, systems::kepler, T> K(systems::kepler{}, T(1) / T(10));
   K.options().max_iterations = 1;
+  K.options().double_jacobian = false;
   auto s1 = K.initial_state(q0, v0);
   CHECK(K.try_step(s1).reason == step_failure::no_convergence);
+}
+
+TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: Newton steps with the matrix in double reach the sweeps' fixed point",
+                        "[lpf_fixed_point]", geomint::test::integrator_scalar_types) {
+  // Multiprecision (newton_options::double_jacobian, the default there): simplified Newton on
+  // the stage equations with their matrix in double. The equations are the sweeps', so 20 steps
+  // of Kepler (e = 1/2, m = 8, tau = 1/8) agree with the sweeps to 20 x 2 x 64 eps (exact
+  // mathematics: one solution, each step within 64 eps of it) and with the Newton form of LPF
+  // (second method, lpf.hpp) as closely, in fewer iterations than the sweeps take. In double
+  // the option changes nothing (the sweeps run either way).
+  using T = TestType;
+  const auto [q0, v0] = kepler_start<T>();
+  std::array<long, 2> iterations{};
+  std::array<vec<T, 2>, 2> q, p;
+  for (const bool in_double : {false, true}) {
+    integrator<lpf_fixed_point<8>, systems::kepler, T> I(systems::kepler{}, T(1) / T(8));
+    I.options().double_jacobian = in_double;
+    auto s = I.initial_state(q0, v0);
+    const std::size_t k = in_double ? 1 : 0;
+    for (int step = 0; step < 20; ++step) {
+      const step_status st = I.try_step(s);
+      REQUIRE(st);
+      iterations[k] += st.iterations;
+    }
+    q[k] = s.q;
+    p[k] = s.p;
+  }
+  integrator<lpf<8, gauss_interior>, systems::kepler, T> N(systems::kepler{}, T(1) / T(8));
+  auto n = N.initial_state(q0, v0);
+  N.advance(n, 20);
+  INFO("iterations: sweeps " << iterations[0] << ", Newton " << iterations[1]);
+  CHECK(T((q[1] - q[0]).cwiseAbs().maxCoeff()) <= eps_tol<T>(2560));
+  CHECK(T((p[1] - p[0]).cwiseAbs().maxCoeff()) <= eps_tol<T>(2560));
+  CHECK(T((q[1] - n.q).cwiseAbs().maxCoeff()) <= eps_tol<T>(2560));
+  CHECK(T((p[1] - n.p).cwiseAbs().maxCoeff()) <= eps_tol<T>(2560));
+  if constexpr (std::is_floating_point_v<T>) {
+    CHECK(iterations[1] == iterations[0]);
+  } else {
+    CHECK(2 * iterations[1] < iterations[0]);
+  }
 }
 
 TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the type-erased stepper takes the integrator's steps", "[lpf_fixed_point]",

@@ -1,89 +1,161 @@
 #pragma once
 /// Small dense linear algebra: LU with complete pivoting for fixed sizes, solve and inverse.
 
+#include <array>
+#include <cmath>
+#include <cstddef>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include <Eigen/Core>
 #include "geomint/linalg/types.hpp"
 
 namespace geomint {
 
+namespace linalg::detail {
+/// LU with complete pivoting (P A Q = L U) in place on a column-major n x n array: false if the
+/// largest remaining pivot is <= n eps max|A| (singular to working precision) or A is not
+/// finite. `Size` is int (the size known at run time: one instantiation per scalar serves every
+/// size) or std::integral_constant<int, N> (loops of known length, unrolled where small): see
+/// lu_extent.
+template <class T, class Size>
+bool lu_factor(T* a, Size size, int* row, int* col) {
+  using std::abs;
+  const int n = static_cast<int>(size);
+  auto at = [&](int i, int j) -> T& { return a[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)]; };
+  T scale(0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (!is_finite(at(i, j))) return false;  // a NaN would slip through the pivot comparisons
+      if (abs(at(i, j)) > scale) scale = abs(at(i, j));
+    }
+  const T tiny = T(n) * std::numeric_limits<T>::epsilon() * scale;
+  for (int k = 0; k < n; ++k) {
+    int pr = k, pc = k;
+    T best(-1);
+    for (int i = k; i < n; ++i)
+      for (int j = k; j < n; ++j)
+        if (abs(at(i, j)) > best) {
+          best = abs(at(i, j));
+          pr = i;
+          pc = j;
+        }
+    if (!(best > tiny)) return false;
+    row[k] = pr;
+    col[k] = pc;
+    if (n > 1) {  // (for a constant n = 1, no swap code for GCC's bounds warnings to see)
+      if (pr != k)
+        for (int j = 0; j < n; ++j) std::swap(at(k, j), at(pr, j));
+      if (pc != k)
+        for (int i = 0; i < n; ++i) std::swap(at(i, k), at(i, pc));
+    }
+    const T inv = T(1) / at(k, k);
+    for (int i = k + 1; i < n; ++i) {
+      const T f = at(i, k) * inv;
+      at(i, k) = f;
+      if (f == T(0)) continue;
+      for (int j = k + 1; j < n; ++j) at(i, j) -= f * at(k, j);
+    }
+  }
+  return true;
+}
+
+/// b <- A^{-1} b from lu_factor's factors. The multipliers were swapped with their rows, so all
+/// row swaps come first (P b).
+template <class T, class Size>
+void lu_solve(const T* a, Size size, const int* row, const int* col, T* b) {
+  const int n = static_cast<int>(size);
+  auto at = [&](int i, int j) -> const T& { return a[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)]; };
+  if (n > 1)
+    for (int k = 0; k < n; ++k)
+      if (row[k] != k) std::swap(b[k], b[row[k]]);
+  for (int k = 0; k < n; ++k)
+    for (int i = k + 1; i < n; ++i) b[i] -= at(i, k) * b[k];
+  for (int k = n - 1; k >= 0; --k) {
+    T sum = b[k];
+    for (int j = k + 1; j < n; ++j) sum -= at(k, j) * b[j];
+    b[k] = sum / at(k, k);
+  }
+  if (n > 1)
+    for (int k = n - 1; k >= 0; --k)
+      if (col[k] != k) std::swap(b[k], b[col[k]]);
+}
+
+/// The size argument of lu_factor and lu_solve for an N x N matrix of T: a compile-time constant
+/// for the built-in types, whose small solves gain from loops of known length, and a run-time
+/// int for the others, whose arithmetic dominates either way and for which one instantiation
+/// then serves every size of a translation unit.
+template <class T, int N>
+using lu_extent = std::conditional_t<std::is_floating_point_v<T>, std::integral_constant<int, N>, int>;
+template <class T, int N>
+constexpr lu_extent<T, N> lu_size() {
+  if constexpr (std::is_floating_point_v<T>) return {};
+  else return N;
+}
+}  // namespace linalg::detail
+
 /// LU factorisation with complete pivoting (P A Q = L U) of a small fixed-size matrix, kept for
 /// reuse (e.g. across Newton iterations); singular to working precision when the largest
-/// remaining pivot is <= N eps max|A|. Written out instead of Eigen::FullPivLU: same algorithm,
-/// but a fraction of the compile time per matrix size, which matters for the many (m, n) sizes
-/// a program instantiates.
+/// remaining pivot is <= N eps max|A| (linalg::detail::lu_factor). Written out instead of
+/// Eigen::FullPivLU: same algorithm, but a fraction of the compile time per matrix size, which
+/// matters for the many (m, n) sizes a program instantiates.
 template <class T, int N>
 class lu_small {
  public:
   /// False if A is singular to working precision or not finite.
   bool factor(const mat<T, N>& A) {
-    using std::abs;
-    if (!all_finite(A)) return false;  // a NaN would slip through the pivot comparisons
     lu_ = A;
-    T scale(0);
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j)
-        if (abs(lu_(i, j)) > scale) scale = abs(lu_(i, j));
-    if (!is_finite(scale)) return false;
-    const T tiny = T(N) * std::numeric_limits<T>::epsilon() * scale;
-    for (int k = 0; k < N; ++k) {
-      int pr = k, pc = k;
-      T best(-1);
-      for (int i = k; i < N; ++i)
-        for (int j = k; j < N; ++j)
-          if (abs(lu_(i, j)) > best) {
-            best = abs(lu_(i, j));
-            pr = i;
-            pc = j;
-          }
-      if (!(best > tiny)) return false;
-      row_[static_cast<std::size_t>(k)] = pr;
-      col_[static_cast<std::size_t>(k)] = pc;
-      if constexpr (N > 1) {
-        if (pr != k)
-          for (int j = 0; j < N; ++j) std::swap(lu_(k, j), lu_(pr, j));
-        if (pc != k)
-          for (int i = 0; i < N; ++i) std::swap(lu_(i, k), lu_(i, pc));
-      }
-      const T inv = T(1) / lu_(k, k);
-      for (int i = k + 1; i < N; ++i) {
-        const T f = lu_(i, k) * inv;
-        lu_(i, k) = f;
-        if (f == T(0)) continue;
-        for (int j = k + 1; j < N; ++j) lu_(i, j) -= f * lu_(k, j);
-      }
-    }
-    return true;
+    return linalg::detail::lu_factor<T>(lu_.data(), linalg::detail::lu_size<T, N>(), row_.data(), col_.data());
   }
   /// x = A^{-1} b; false if x is not finite.
   bool solve(vec<T, N> b, vec<T, N>& x) const {
-    // The multipliers were swapped with their rows, so all row swaps come first (P b).
-    if constexpr (N > 1) {
-      for (int k = 0; k < N; ++k) {
-        const int r = row_[static_cast<std::size_t>(k)];
-        if (r != k) std::swap(b[k], b[r]);
-      }
-    }
-    for (int k = 0; k < N; ++k)
-      for (int i = k + 1; i < N; ++i) b[i] -= lu_(i, k) * b[k];
-    for (int k = N - 1; k >= 0; --k) {
-      T sum = b[k];
-      for (int j = k + 1; j < N; ++j) sum -= lu_(k, j) * b[j];
-      b[k] = sum / lu_(k, k);
-    }
-    if constexpr (N > 1) {
-      for (int k = N - 1; k >= 0; --k) {
-        const int c = col_[static_cast<std::size_t>(k)];
-        if (c != k) std::swap(b[k], b[c]);
-      }
-    }
+    linalg::detail::lu_solve<T>(lu_.data(), linalg::detail::lu_size<T, N>(), row_.data(), col_.data(), b.data());
     x = b;
     return all_finite(x);
   }
 
  private:
   mat<T, N> lu_ = mat<T, N>::Zero();
+  std::array<int, N> row_{}, col_{};
+};
+
+/// An N x N matrix of any scalar rounded to double and factorised there (linalg::detail::
+/// lu_factor<double>), to solve for corrections in double from residuals in the scalar
+/// (newton_options::double_jacobian).
+template <int N>
+class lu_in_double {
+ public:
+  /// False if A does not round to a finite double matrix or is singular in double.
+  template <class Derived>
+  bool factor(const Eigen::MatrixBase<Derived>& A) {
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i < N; ++i) at(i, j) = static_cast<double>(A(i, j));
+    return factor_in_place();
+  }
+  /// Element (i, j) of the matrix to factorise, for callers that fill it in double directly.
+  double& at(int i, int j) { return a_[static_cast<std::size_t>(j) * N + static_cast<std::size_t>(i)]; }
+  /// Factorises the matrix filled through at(); false if it is not finite or singular.
+  bool factor_in_place() { return linalg::detail::lu_factor<double, int>(a_.data(), N, row_.data(), col_.data()); }
+  /// x = A^{-1} b with b rounded to double and x converted back to T; false if b or x is not
+  /// finite in double.
+  template <class T>
+  bool solve(const vec<T, N>& b, vec<T, N>& x) const {
+    std::array<double, N> y;
+    for (int i = 0; i < N; ++i) {
+      y[static_cast<std::size_t>(i)] = static_cast<double>(b[i]);
+      if (!std::isfinite(y[static_cast<std::size_t>(i)])) return false;
+    }
+    linalg::detail::lu_solve<double, int>(a_.data(), N, row_.data(), col_.data(), y.data());
+    for (int i = 0; i < N; ++i) {
+      if (!std::isfinite(y[static_cast<std::size_t>(i)])) return false;
+      x[i] = T(y[static_cast<std::size_t>(i)]);
+    }
+    return true;
+  }
+
+ private:
+  std::array<double, static_cast<std::size_t>(N) * N> a_{};
   std::array<int, N> row_{}, col_{};
 };
 

@@ -135,7 +135,7 @@ struct jacobian_cache {
   lu_small<T, N> lu;
   /// The factorisation of the matrix rounded to double (newton_options::double_jacobian), used
   /// instead of `lu` when `in_double`.
-  lu_small<double, N> lu_double;
+  lu_in_double<N> lu_double;
   bool in_double = false;
   bool valid = false;
   T rate = T(0);
@@ -145,12 +145,9 @@ struct jacobian_cache {
   bool factor(const mat<T, N>& J, [[maybe_unused]] bool try_double) {
     in_double = false;
     if constexpr (!std::is_floating_point_v<T>) {
-      if (try_double) {
-        const mat<double, N> Jd = J.template cast<double>();
-        if (all_finite(Jd) && lu_double.factor(Jd)) {
-          in_double = true;
-          return true;
-        }
+      if (try_double && lu_double.factor(J)) {
+        in_double = true;
+        return true;
       }
     }
     return lu.factor(J);
@@ -158,13 +155,7 @@ struct jacobian_cache {
   /// dz = -J^{-1} F with the kept factorisation; false if dz is not finite.
   bool correction(const vec<T, N>& F, vec<T, N>& dz) const {
     if constexpr (!std::is_floating_point_v<T>) {
-      if (in_double) {
-        vec<double, N> d;
-        const vec<double, N> Fd = (-F).template cast<double>();
-        if (!all_finite(Fd) || !lu_double.solve(Fd, d)) return false;
-        dz = d.template cast<T>();
-        return true;
-      }
+      if (in_double) return lu_double.solve(vec<T, N>(-F), dz);
     }
     return lu.solve(vec<T, N>(-F), dz);
   }
