@@ -1,6 +1,7 @@
 /// LPF on Gauss-interior nodes in the fixed-point Nystrom form (schemes/lpf_fixed_point.hpp).
 #include <array>
 #include <cmath>
+#include <tuple>
 
 #include "catch.hpp"
 #include "geomint/integrator.hpp"
@@ -44,6 +45,23 @@ std::pair<vec<T, 2>, vec<T, 2>> kepler_start() {
   using std::sqrt;
   const T e = T(1) / T(2);
   return {vec<T, 2>(T(1) - e, T(0)), vec<T, 2>(T(0), T(sqrt((T(1) + e) / (T(1) - e))))};
+}
+
+/// 20 steps of lpf_fixed_point<8> on Kepler from the pericentre, tau = 1/8, with the options
+/// `configure` sets: the final state and the iterations of all steps.
+template <class T, class Configure>
+std::tuple<vec<T, 2>, vec<T, 2>, long> kepler_20_steps(Configure configure) {
+  const auto start = kepler_start<T>();
+  integrator<lpf_fixed_point<8>, systems::kepler, T> I(systems::kepler{}, T(1) / T(8));
+  configure(I.options());
+  auto s = I.initial_state(start.first, start.second);
+  long iterations = 0;
+  for (int step = 0; step < 20; ++step) {
+    const step_status st = I.try_step(s);
+    REQUIRE(st);
+    iterations += st.iterations;
+  }
+  return {s.q, s.p, iterations};
 }
 
 template <int M, class T>
@@ -175,22 +193,14 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: stop_on_rate saves sweeps and keeps th
   // step's iterate is within tolerance_ulps (64) eps of it, so after 20 steps the runs agree to
   // 20 x 2 x 64 eps (exact mathematics: one fixed point), and the rate's stop takes fewer sweeps.
   using T = TestType;
-  const auto [q0, v0] = kepler_start<T>();
   std::array<long, 2> sweeps{};
   std::array<vec<T, 2>, 2> q, p;
   for (const bool stop_on_rate : {false, true}) {
-    integrator<lpf_fixed_point<8>, systems::kepler, T> I(systems::kepler{}, T(1) / T(8));
-    I.options().stop_on_rate = stop_on_rate;
-    I.options().double_jacobian = false;  // the sweeps
-    auto s = I.initial_state(q0, v0);
     const std::size_t k = stop_on_rate ? 1 : 0;
-    for (int step = 0; step < 20; ++step) {
-      const step_status st = I.try_step(s);
-      REQUIRE(st);
-      sweeps[k] += st.iterations;
-    }
-    q[k] = s.q;
-    p[k] = s.p;
+    std::tie(q[k], p[k], sweeps[k]) = kepler_20_steps<T>([&](newton_options<T>& o) {
+      o.stop_on_rate = stop_on_rate;
+      o.double_jacobian = false;  // the sweeps
+    });
   }
   CHECK(T((q[1] - q[0]).cwiseAbs().maxCoeff()) <= eps_tol<T>(2560));
   CHECK(T((p[1] - p[0]).cwiseAbs().maxCoeff()) <= eps_tol<T>(2560));
@@ -235,17 +245,9 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: Newton steps with the matrix in double
   std::array<long, 2> iterations{};
   std::array<vec<T, 2>, 2> q, p;
   for (const bool in_double : {false, true}) {
-    integrator<lpf_fixed_point<8>, systems::kepler, T> I(systems::kepler{}, T(1) / T(8));
-    I.options().double_jacobian = in_double;
-    auto s = I.initial_state(q0, v0);
     const std::size_t k = in_double ? 1 : 0;
-    for (int step = 0; step < 20; ++step) {
-      const step_status st = I.try_step(s);
-      REQUIRE(st);
-      iterations[k] += st.iterations;
-    }
-    q[k] = s.q;
-    p[k] = s.p;
+    std::tie(q[k], p[k], iterations[k]) =
+        kepler_20_steps<T>([&](newton_options<T>& o) { o.double_jacobian = in_double; });
   }
   integrator<lpf<8, gauss_interior>, systems::kepler, T> N(systems::kepler{}, T(1) / T(8));
   auto n = N.initial_state(q0, v0);
