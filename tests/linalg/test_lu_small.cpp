@@ -1,4 +1,4 @@
-/// The small LU with complete pivoting (linalg/lu_small.hpp).
+/// The small LU with complete pivoting, and partial pivoting in double (linalg/lu_small.hpp).
 ///
 /// Independent sources of the expected values: the residual A x - b, which is zero for the exact
 /// solution (a backward-error check, exact mathematics); Eigen's FullPivLU in cpp_bin_float_100
@@ -103,4 +103,31 @@ TEMPLATE_LIST_TEST_CASE("lu_small refuses singular and non-finite matrices", "[l
   CHECK_FALSE(all_finite(x));  // NaN input: the solution says so
   mat<T, N> inv;
   CHECK_FALSE(invert_small<T, N>(A, inv));
+}
+
+TEST_CASE("lu_in_double: partial pivoting solves to a backward error of a few eps", "[linalg]") {
+  // The double factorisation with the pivot searched in its column only (linalg::pivoting::
+  // partial, for stage matrices near the identity): Wilkinson's backward-error bound for the
+  // residual (exact mathematics), for matrices dominated by the diagonal and for general ones.
+  // A row of zeros left after elimination (singular by construction) is refused as with
+  // complete pivoting.
+  constexpr int N = 12;
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const mat<double, N> A = sample_matrix<double, N>(seed, seed % 2 == 0 ? 8 : 0);
+    const vec<double, N> b = sample_vector<double, N>(seed + 100);
+    lu_in_double<N> lu;
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) lu.at(i, j) = A(i, j);
+    REQUIRE(lu.factor_in_place(linalg::pivoting::partial));
+    vec<double, N> x;
+    REQUIRE(lu.solve(b, x));
+    const double residual = (A * x - b).lpNorm<Eigen::Infinity>();
+    CHECK(residual <= 4 * N * std::numeric_limits<double>::epsilon() * A.lpNorm<Eigen::Infinity>() *
+                          x.lpNorm<Eigen::Infinity>());
+  }
+  lu_in_double<3> singular;
+  const double rows[3][3] = {{1, 2, 3}, {4, 5, 6}, {5, 7, 9}};  // row 2 = row 0 + row 1
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) singular.at(i, j) = rows[i][j];
+  CHECK_FALSE(singular.factor_in_place(linalg::pivoting::partial));
 }

@@ -1,4 +1,5 @@
 /// LPF on Gauss-interior nodes in the fixed-point Nystrom form (schemes/lpf_fixed_point.hpp).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <tuple>
@@ -262,6 +263,64 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: Newton steps with the matrix in double
   } else {
     CHECK(2 * iterations[1] < iterations[0]);
   }
+}
+
+TEST_CASE("lpf_fixed_point: multiprecision steps start from the stage equations solved in double",
+          "[lpf_fixed_point]") {
+  // The pendulum from theta = 1 with m = 16 and tau = 7/10, near the largest step of the
+  // work-precision runs at 1e-30, where the extrapolated predictor is off by about 1e-5. The
+  // equations are first solved in double (presolve_in_double), which leaves their matrix
+  // factorised at that solution: the iteration in T then starts about 1e-16 from the fixed point
+  // and gains about 16 digits per iteration, so 50 digits take three (the third bounds what is
+  // left below eps; measured: 3 in every step, 4 or 5 from the predictor before). Each step is
+  // the sweeps' fixed point to 2 x 64 eps (exact mathematics: one solution), so 20 steps agree to
+  // 20 x 2 x 64 eps with the sweeps (double_jacobian = false) and with LPF's Newton form (second
+  // method, lpf.hpp).
+  using T = geomint::test::cpp_bin_float_50;
+  const T tau = T(7) / T(10);
+  integrator<lpf_fixed_point<16>, systems::pendulum, T> A(systems::pendulum{}, tau);
+  integrator<lpf_fixed_point<16>, systems::pendulum, T> B(systems::pendulum{}, tau);
+  B.options().double_jacobian = false;
+  integrator<lpf<16, gauss_interior>, systems::pendulum, T> N(systems::pendulum{}, tau);
+  auto a = A.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
+  auto b = a;
+  auto c = N.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
+  int most = 0;
+  for (int k = 0; k < 20; ++k) {
+    const step_status st = A.try_step(a);
+    REQUIRE(st);
+    most = std::max(most, st.iterations);
+    B.step(b);
+    N.step(c);
+  }
+  CHECK(most <= 3);
+  CHECK(abs(T(a.q[0] - b.q[0])) <= eps_tol<T>(2560));
+  CHECK(abs(T(a.p[0] - b.p[0])) <= eps_tol<T>(2560));
+  CHECK(abs(T(a.q[0] - c.q[0])) <= eps_tol<T>(2560));
+  CHECK(abs(T(a.p[0] - c.p[0])) <= eps_tol<T>(2560));
+}
+
+TEST_CASE("lpf_fixed_point: beyond double's range the steps fall back to the sweeps", "[lpf_fixed_point][errors]") {
+  // The harmonic oscillator at q = p = 2^1400, a state double cannot hold: neither the presolve
+  // in double nor the stage matrix in double is possible, so the steps are the sweeps'
+  // (Gauss-Seidel in T). The sweeps are homogeneous in the state (a linear force, tests relative
+  // to the iterate), and scaling by a power of two is exact in binary floating point, so ten
+  // steps from there are exactly 2^1400 times ten sweep steps (double_jacobian = false) from
+  // q = p = 1 (exact mathematics).
+  using T = geomint::test::cpp_bin_float_50;
+  using std::ldexp;
+  const int shift = 1400;
+  integrator<lpf_fixed_point<6>, systems::harmonic, T> A(systems::harmonic{}, T(1) / T(4));
+  integrator<lpf_fixed_point<6>, systems::harmonic, T> B(systems::harmonic{}, T(1) / T(4));
+  B.options().double_jacobian = false;
+  auto a = A.initial_state(vec<T, 1>(T(ldexp(T(1), shift))), vec<T, 1>(T(ldexp(T(1), shift))));
+  auto b = B.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(1)));
+  for (int k = 0; k < 10; ++k) {
+    REQUIRE(A.try_step(a));
+    REQUIRE(B.try_step(b));
+  }
+  CHECK(a.q[0] == T(ldexp(b.q[0], shift)));
+  CHECK(a.p[0] == T(ldexp(b.p[0], shift)));
 }
 
 TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the type-erased stepper takes the integrator's steps", "[lpf_fixed_point]",

@@ -19,7 +19,8 @@
 #include <utility>
 
 #include <Eigen/Core>
-#include <boost/math/constants/constants.hpp>
+
+#include "geomint/core/elementary.hpp"
 
 namespace geomint {
 
@@ -175,20 +176,6 @@ dual<T, N> chain(const dual<T, N>& x, const T& value, const T& slope) {
   return r;
 }
 
-namespace ad::detail {
-/// sqrt(a) for a in [1/2, 1] in a multiprecision type: the double square root refined by
-/// Newton's iteration y <- (y + a/y)/2, which doubles the correct bits each time, to the
-/// precision of T: two corrections at 50 digits, each a division, where Boost's cpp_bin_float
-/// sqrt works on the doubled integer mantissa.
-template <class T>
-T sqrt_near_one(const T& a) {
-  using std::sqrt;
-  T y(sqrt(static_cast<double>(a)));
-  for (int bits = std::numeric_limits<double>::digits - 1; bits < std::numeric_limits<T>::digits + 2; bits *= 2)
-    y = T(T(y + T(a / y)) / T(2));
-  return y;
-}
-}  // namespace ad::detail
 
 /// The elementary functions. Each evaluates f and f' on the value through an unqualified call
 /// (std:: for built-in types, ADL for Boost.Multiprecision and for lower-level duals), so they
@@ -196,46 +183,7 @@ T sqrt_near_one(const T& a) {
 ///
 /// sin and cos together: each level of a nested dual needs both of the level below, so
 /// separate sin and cos would evaluate the innermost sin and cos 2^depth times; jointly, once
-/// each (in multiprecision these evaluations dominate a step).
-///
-/// In a multiprecision type one series evaluation serves both: the quadrant k of x (x near
-/// k pi/2) says which of sin x, cos x is at most 1/sqrt 2 in magnitude; that one is evaluated
-/// and the other is sqrt(1 - s^2) with the quadrant's sign. There 1 - s^2 >= 1/2, so the
-/// square root adds a few units of the last place; a k off by one next to a quadrant boundary
-/// (|s| near 1/sqrt 2) keeps that bound and the signs. Built-in types keep the library's
-/// sin and cos, as do types without a fixed precision above double's and arguments too large
-/// for k to be exact.
-template <class T>
-std::pair<T, T> sin_cos(const T& x) {
-  using std::abs;
-  using std::cos;
-  using std::sin;
-  // Types with a precision fixed above double's (a variable-precision type such as Boost's
-  // mpfr_float reports INT_MAX digits).
-  constexpr int digits = std::numeric_limits<T>::digits;
-  if constexpr (!std::is_arithmetic_v<T> && digits > std::numeric_limits<double>::digits &&
-                digits < std::numeric_limits<int>::max()) {
-    const T largest = T(1) / (T(16) * std::numeric_limits<T>::epsilon());
-    if (abs(x) < largest && abs(x) < T(std::int64_t(1) << 60)) {
-      using std::floor;
-      using std::round;
-      const T k = T(round(T(x * boost::math::constants::two_div_pi<T>())));
-      const T k_mod_4 = T(k - T(4) * T(floor(T(k / T(4)))));  // exact: k is an integer below 2^60
-      const int quadrant = k_mod_4 < T(1) ? 0 : k_mod_4 < T(2) ? 1 : k_mod_4 < T(3) ? 2 : 3;
-      const T small = (quadrant % 2 == 0) ? T(sin(x)) : T(cos(x));
-      if (abs(small) <= T(3) / T(4)) {
-        const T other = ad::detail::sqrt_near_one(T(T(1) - small * small));
-        switch (quadrant) {
-          case 0: return {small, other};                  // x near 2 j pi
-          case 1: return {other, small};                  // x near 2 j pi + pi/2
-          case 2: return {small, T(-other)};              // x near 2 j pi + pi
-          default: return {T(-other), small};             // x near 2 j pi + 3 pi/2
-        }
-      }
-    }
-  }
-  return {T(sin(x)), T(cos(x))};
-}
+/// each, by the scalar sin_cos of core/elementary.hpp (fast in multiprecision).
 template <class T, int N>
 std::pair<dual<T, N>, dual<T, N>> sin_cos(const dual<T, N>& x) {
   const std::pair<T, T> sc = sin_cos(x.v);

@@ -13,14 +13,21 @@
 
 namespace geomint {
 
+namespace linalg {
+/// The pivot search of an LU factorisation: complete (the largest remaining element; the
+/// default) or partial (the largest in the pivot column; O(n^2) comparisons instead of O(n^3),
+/// for matrices near the identity such as implicit stage matrices I - h A J).
+enum class pivoting { complete, partial };
+}  // namespace linalg
+
 namespace linalg::detail {
-/// LU with complete pivoting (P A Q = L U) in place on a column-major n x n array: false if the
-/// largest remaining pivot is <= n eps max|A| (singular to working precision) or A is not
-/// finite. `Size` is int (the size known at run time: one instantiation per scalar serves every
-/// size) or std::integral_constant<int, N> (loops of known length, unrolled where small): see
-/// lu_extent.
+/// LU with complete pivoting (P A Q = L U; with pivoting::partial, Q = I) in place on a
+/// column-major n x n array: false if the largest remaining pivot is <= n eps max|A| (singular
+/// to working precision) or A is not finite. `Size` is int (the size known at run time: one
+/// instantiation per scalar serves every size) or std::integral_constant<int, N> (loops of
+/// known length, unrolled where small): see lu_extent.
 template <class T, class Size>
-bool lu_factor(T* a, Size size, int* row, int* col) {
+bool lu_factor(T* a, Size size, int* row, int* col, pivoting search = pivoting::complete) {
   using std::abs;
   const int n = static_cast<int>(size);
   auto at = [&](int i, int j) -> T& { return a[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)]; };
@@ -32,15 +39,20 @@ bool lu_factor(T* a, Size size, int* row, int* col) {
     }
   const T tiny = T(n) * std::numeric_limits<T>::epsilon() * scale;
   for (int k = 0; k < n; ++k) {
+    // The largest remaining element, the first in row order among equals; scanned down the
+    // columns (contiguous).
     int pr = k, pc = k;
     T best(-1);
-    for (int i = k; i < n; ++i)
-      for (int j = k; j < n; ++j)
-        if (abs(at(i, j)) > best) {
-          best = abs(at(i, j));
+    const int last_column = search == pivoting::complete ? n : k + 1;
+    for (int j = k; j < last_column; ++j)
+      for (int i = k; i < n; ++i) {
+        const T v = abs(at(i, j));
+        if (v > best || (v == best && i < pr)) {
+          best = v;
           pr = i;
           pc = j;
         }
+      }
     if (!(best > tiny)) return false;
     row[k] = pr;
     col[k] = pc;
@@ -51,11 +63,13 @@ bool lu_factor(T* a, Size size, int* row, int* col) {
         for (int i = 0; i < n; ++i) std::swap(at(i, k), at(i, pc));
     }
     const T inv = T(1) / at(k, k);
-    for (int i = k + 1; i < n; ++i) {
-      const T f = at(i, k) * inv;
-      at(i, k) = f;
-      if (f == T(0)) continue;
-      for (int j = k + 1; j < n; ++j) at(i, j) -= f * at(k, j);
+    for (int i = k + 1; i < n; ++i) at(i, k) *= inv;
+    // Column by column, down each column (contiguous): every element gets the same single
+    // update as row by row, so the factors are the same to the bit.
+    for (int j = k + 1; j < n; ++j) {
+      const T u = at(k, j);
+      if (u == T(0)) continue;
+      for (int i = k + 1; i < n; ++i) at(i, j) -= at(i, k) * u;
     }
   }
   return true;
@@ -136,7 +150,9 @@ class lu_in_double {
   /// Element (i, j) of the matrix to factorise, for callers that fill it in double directly.
   double& at(int i, int j) { return a_[static_cast<std::size_t>(j) * N + static_cast<std::size_t>(i)]; }
   /// Factorises the matrix filled through at(); false if it is not finite or singular.
-  bool factor_in_place() { return linalg::detail::lu_factor<double, int>(a_.data(), N, row_.data(), col_.data()); }
+  bool factor_in_place(linalg::pivoting search = linalg::pivoting::complete) {
+    return linalg::detail::lu_factor<double, int>(a_.data(), N, row_.data(), col_.data(), search);
+  }
   /// x = A^{-1} b with b rounded to double and x converted back to T; false if b or x is not
   /// finite in double.
   template <class T>

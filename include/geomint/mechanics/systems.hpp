@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "geomint/core/elementary.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
 
 namespace geomint::systems {
@@ -37,11 +38,11 @@ struct pendulum : natural<pendulum, 1> {
     using std::cos;
     return S(1) - cos(q[0]);
   }
-  /// grad V = sin theta: one sine per force, where AD on V also forms the cosine.
+  /// grad V = sin theta: one sine per force, where AD on V also forms the cosine (sine: fast
+  /// in multiprecision, core/elementary.hpp).
   template <class S>
   static vec<S, 1> potential_gradient(const vec<S, 1>& q) {
-    using std::sin;
-    return vec<S, 1>(S(sin(q[0])));
+    return vec<S, 1>(sine(q[0]));
   }
   template <class T>
   static mat<T, 1> mass_matrix() { return mat<T, 1>::Identity(); }
@@ -63,12 +64,12 @@ struct kepler : natural<kepler, 2> {
     using std::sqrt;
     return S(-1) / sqrt(q[0] * q[0] + q[1] * q[1]);
   }
-  /// grad V = q / |q|^3.
+  /// grad V = q / |q|^3, with 1/|q| from inverse_sqrt (fast in multiprecision).
   template <class S>
   static vec<S, 2> potential_gradient(const vec<S, 2>& q) {
-    using std::sqrt;
     const S r2 = q[0] * q[0] + q[1] * q[1];
-    const S s = S(1) / S(r2 * sqrt(r2));
+    const S y = inverse_sqrt(r2);
+    const S s = y * y * y;
     return vec<S, 2>(S(q[0] * s), S(q[1] * s));
   }
   template <class T>

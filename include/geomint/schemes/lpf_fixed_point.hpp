@@ -152,6 +152,15 @@ class lpf_fixed_point_engine {
         extrapolate_[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
             k_.b[static_cast<std::size_t>(i)] * l[static_cast<std::size_t>(j)] / k_.b[static_cast<std::size_t>(j)];
     }
+    if constexpr (!std::is_floating_point_v<T>) {
+      for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I)
+        for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) {
+          in_double_.mu[I][J] = static_cast<double>(k_.mu[I][J]);
+          in_double_.extrapolate[I][J] = static_cast<double>(extrapolate_[I][J]);
+        }
+      for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) in_double_.minv(r, c) = static_cast<double>(minv_(r, c));
+    }
   }
 
   const gauss_nystrom_coefficients<T, S>& coefficients() const { return k_; }
@@ -165,13 +174,13 @@ class lpf_fixed_point_engine {
     opt.validate();
     try_lock_flag lock(memory_.busy);
     fixed_point_memory<T, n, S>* mem = lock.owned() ? &memory_ : nullptr;
-    const V v = minv_ * p;
+    const V v = inverse_mass(p);
     // Compensated summation: the state is (q + carry.q, p + carry.p). The stages and the update
     // see the carried parts (as in IRKGL16), so that the increments are those of the state the
     // carry stands for, not of its rounding: stage i is q + (offset_i + tau (c_i v + M^{-1} z_i))
     // with offset_i = carry.q + tau c_i M^{-1} carry.p (zero without compensation), the offset
     // added to the exact product in built-in floating types (stage_point).
-    const V dv = carry ? V(minv_ * carry->p) : V::Zero();
+    const V dv = carry ? inverse_mass(carry->p) : V::Zero();
     stage_terms terms;
     terms.exact_offsets = std::is_floating_point_v<T> && carry;
     for (int i = 0; i < S; ++i) {
@@ -181,7 +190,17 @@ class lpf_fixed_point_engine {
       terms.offset[I] = carry ? V(carry->q + tau * V(k_.c[I] * dv)) : V::Zero();
     }
     std::array<V, S> F;
-    if (mem && mem->continues(q, p, tau)) {
+    const bool continues = mem && mem->continues(q, p, tau);
+    // Multiprecision (opt.double_jacobian): the stage equations solved first in double
+    // (presolve_in_double), which also leaves the Newton matrix factorised at that solution.
+    lu_in_double<S * n> lu;
+    bool presolved = false;
+    if constexpr (!std::is_floating_point_v<T>) {
+      if (opt.double_jacobian) presolved = presolve_in_double(q, tau, terms, continues ? &mem->F : nullptr, F, lu, opt);
+    }
+    if (presolved) {
+      // F holds the double solution.
+    } else if (continues) {
       for (int i = 0; i < S; ++i) {
         V x = V::Zero();
         for (int j = 0; j < S; ++j) x += extrapolate_[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * mem->F[static_cast<std::size_t>(j)];
@@ -191,14 +210,14 @@ class lpf_fixed_point_engine {
       for (int i = 0; i < S; ++i)
         F[static_cast<std::size_t>(i)] = terms.hb[static_cast<std::size_t>(i)] * force(V(q + (tau * k_.c[static_cast<std::size_t>(i)]) * v));
     }
-    step_status st = iterate(q, tau, terms, F, opt);
+    step_status st = iterate(q, tau, terms, F, opt, presolved ? &lu : nullptr);
     if (!st) {
       if (mem) mem->valid = false;
       return st;
     }
     V se = V::Zero();
     for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) se += k_.e[I] * F[I];
-    const V rest = dv + minv_ * se;
+    const V rest = dv + inverse_mass(se);
     phase_carry<T, n> carry_next;
     if (carry) carry_next = *carry;
     bool updated = false;
@@ -287,7 +306,7 @@ class lpf_fixed_point_engine {
   /// non-finite iterate, two growths in a row above that level, or the iteration budget
   /// (sweep_budget) spent above `tolerance_ulps` eps is a failure.
   step_status iterate(const V& q, const T& tau, const stage_terms& terms, std::array<V, S>& F,
-                      const newton_options<T>& opt) const {
+                      const newton_options<T>& opt, const lu_in_double<S * n>* factorised = nullptr) const {
     using std::abs;
     const T eps = std::numeric_limits<T>::epsilon();
     const T floor_level = epsilon_two_thirds<T>();
@@ -300,7 +319,18 @@ class lpf_fixed_point_engine {
     lu_in_double<S * n> lu;
     bool newton = false;
     if constexpr (!std::is_floating_point_v<T>) {
-      if (opt.double_jacobian) newton = stage_matrix(q, tau, terms, F, lu);
+      if (factorised) {
+        lu = *factorised;
+        newton = true;
+      } else if (opt.double_jacobian) {
+        std::array<vec<double, n>, S> Q;
+        for (int i = 0; i < S; ++i) {
+          const auto I = static_cast<std::size_t>(i);
+          const V Qt = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
+          for (int r = 0; r < n; ++r) Q[I][r] = static_cast<double>(Qt[r]);
+        }
+        newton = stage_matrix(Q, static_cast<double>(tau), terms, lu);
+      }
     }
     for (int it = 1; it <= budget; ++it) {
       st.iterations = it;
@@ -308,19 +338,19 @@ class lpf_fixed_point_engine {
       T change(0), size(0);
       for (int i = 0; i < S; ++i) {
         const auto I = static_cast<std::size_t>(i);
-        V z = V::Zero();
-        for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) z += k_.mu[I][J] * F[J];
-        const V Q = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + minv_ * z), terms.exact_offsets);
+        const V Q = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
         next[I] = terms.hb[I] * force(Q);
         if (!all_finite(next[I])) {
           st.reason = step_failure::non_finite_iterate;
           return st;
         }
-        for (int r = 0; r < n; ++r) {
-          const T d = abs(next[I][r] - F[I][r]);
-          if (d > change) change = d;
-          const T a = abs(next[I][r]);
-          if (a > size) size = a;
+        if (!newton) {  // (Newton measures its corrections below)
+          for (int r = 0; r < n; ++r) {
+            const T d = abs(next[I][r] - F[I][r]);
+            if (d > change) change = d;
+            const T a = abs(next[I][r]);
+            if (a > size) size = a;
+          }
         }
         // Multiprecision: Gauss-Seidel, each stage sees the stages already updated in this sweep
         // (fewer sweeps). Built-in types: Jacobi, whose S force evaluations are independent and
@@ -379,30 +409,115 @@ class lpf_fixed_point_engine {
     return st;
   }
 
-  /// The stage equations' matrix dG/dF = I - [tau^2 b_i mu_ij f'(Q_i) M^{-1}]_ij at the stages
-  /// of F (G(F) = F - tau b f(Q(F)), f' = -V'' from AD in double), rounded to double and
-  /// factorised there; false if it does not fit in double or is singular there.
-  bool stage_matrix(const V& q, const T& tau, const stage_terms& terms, const std::array<V, S>& F,
+  /// M^{-1} x, skipped for a unit mass matrix (exact either way).
+  V inverse_mass(const V& x) const { return unit_mass_ ? x : V(minv_ * x); }
+
+  /// sum_j mu_ij F_j.
+  V mu_row(std::size_t I, const std::array<V, S>& F) const {
+    V z = V::Zero();
+    for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) z += k_.mu[I][J] * F[J];
+    return z;
+  }
+
+  /// The stage equations' matrix dG/dF = I - [tau^2 b_i mu_ij f'(Q_i) M^{-1}]_ij at the stage
+  /// points Q (G(F) = F - tau b f(Q(F)), f' = -V'' from AD in double), formed and factorised in
+  /// double (partial pivoting: the matrix is near the identity for the steps the iteration
+  /// reaches); false if it is not finite or singular there.
+  bool stage_matrix(const std::array<vec<double, n>, S>& Q, double tau, const stage_terms& terms,
                     lu_in_double<S * n>& lu) const {
     using Vd = vec<double, n>;
-    const mat<double, n> minv = minv_.template cast<double>();
     for (int i = 0; i < S; ++i) {
       const auto I = static_cast<std::size_t>(i);
-      V z = V::Zero();
-      for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) z += k_.mu[I][J] * F[J];
-      Vd Q;
-      const V Qt = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + minv_ * z), terms.exact_offsets);
-      for (int r = 0; r < n; ++r) Q[r] = static_cast<double>(Qt[r]);
-      if (!all_finite(Q)) return false;
-      const mat<double, n> B = lagrangian_derivatives<Sys, double>::hessian(sys_, Q, Vd::Zero()).Lqq * minv;
-      const double h = static_cast<double>(T(terms.hb[I] * tau));
+      if (!all_finite(Q[I])) return false;
+      const mat<double, n> B = lagrangian_derivatives<Sys, double>::hessian(sys_, Q[I], Vd::Zero()).Lqq * in_double_.minv;
+      const double h = static_cast<double>(terms.hb[I]) * tau;
       for (int j = 0; j < S; ++j) {
-        const double w = h * static_cast<double>(k_.mu[I][static_cast<std::size_t>(j)]);
+        const double w = h * in_double_.mu[I][static_cast<std::size_t>(j)];
         for (int r = 0; r < n; ++r)
           for (int c = 0; c < n; ++c) lu.at(i * n + r, j * n + c) = double(i == j && r == c) - w * B(r, c);
       }
     }
-    return lu.factor_in_place();
+    return lu.factor_in_place(linalg::pivoting::partial);
+  }
+
+  /// The stage equations solved in double by Newton's method, from the extrapolation of the
+  /// previous step's increments (`previous`) or else from the explicit stage estimate: F
+  /// receives that solution (about 16 digits) and `lu` the matrix factorised at it, so that the
+  /// iteration in T (iterate) starts where double ends and gains about 16 digits per iteration
+  /// from the first. False (F and lu unusable) if double cannot hold the step, or if the
+  /// iteration in double does not reach its round-off floor within opt.max_iterations.
+  bool presolve_in_double(const V& q, const T& tau, const stage_terms& terms, const std::array<V, S>* previous,
+                          std::array<V, S>& F, lu_in_double<S * n>& lu, const newton_options<T>& opt) const {
+    using Vd = vec<double, n>;
+    using std::abs;
+    const double eps = std::numeric_limits<double>::epsilon();
+    const double floor_level = epsilon_two_thirds<double>();
+    const double h = static_cast<double>(tau);
+    Vd qd;
+    for (int r = 0; r < n; ++r) qd[r] = static_cast<double>(q[r]);
+    // Stage i is q + base_i + tau M^{-1} z_i, base_i = offset_i + tau c_i v.
+    std::array<Vd, S> base, Fd, Q;
+    std::array<double, S> hb;
+    for (int i = 0; i < S; ++i) {
+      const auto I = static_cast<std::size_t>(i);
+      hb[I] = static_cast<double>(terms.hb[I]);
+      for (int r = 0; r < n; ++r) base[I][r] = static_cast<double>(T(terms.offset[I][r] + tau * terms.cv[I][r]));
+    }
+    auto force_d = [&](const Vd& x) { return lagrangian_derivatives<Sys, double>::lagrangian_q(sys_, x, Vd::Zero()); };
+    auto stages = [&] {
+      for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
+        Vd z = Vd::Zero();
+        for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) z += in_double_.mu[I][J] * Fd[J];
+        Q[I] = qd + Vd(base[I] + h * Vd(in_double_.minv * z));
+      }
+    };
+    if (previous) {
+      std::array<Vd, S> last;
+      for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J)
+        for (int r = 0; r < n; ++r) last[J][r] = static_cast<double>((*previous)[J][r]);
+      for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
+        Fd[I] = Vd::Zero();
+        for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) Fd[I] += in_double_.extrapolate[I][J] * last[J];
+      }
+    } else {
+      for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) Fd[I] = hb[I] * force_d(Vd(qd + base[I]));
+    }
+    // Newton's method, the matrix refreshed while the iteration is far from its solution
+    // (a correction above sqrt(eps) of the increments) and once more at the end.
+    double previous_change = std::numeric_limits<double>::infinity();
+    bool refresh = true, converged = false;
+    for (int it = 1; it <= opt.max_iterations && !converged; ++it) {
+      stages();
+      vec<double, S * n> r, d;
+      for (int i = 0; i < S; ++i) {
+        const auto I = static_cast<std::size_t>(i);
+        r.template segment<n>(i * n) = hb[I] * force_d(Q[I]) - Fd[I];
+      }
+      if (!all_finite(r)) return false;
+      if (refresh && !stage_matrix(Q, h, terms, lu)) return false;
+      if (!lu.solve(r, d)) return false;
+      double change = 0, size = 0;
+      for (int i = 0; i < S; ++i) {
+        const auto I = static_cast<std::size_t>(i);
+        Fd[I] += d.template segment<n>(i * n);
+        for (int c = 0; c < n; ++c) {
+          change = std::max(change, abs(d[i * n + c]));
+          size = std::max(size, abs(Fd[I][c]));
+        }
+      }
+      // At double's floor: a change of a few ulps, one that the contraction rate bounds below
+      // eps, or one that stopped shrinking below eps^(2/3).
+      converged = change <= 4 * eps * size || (it > 1 && rate_bounds_error(change / previous_change, change, size)) ||
+                  (change >= previous_change && change <= floor_level * size);
+      refresh = change > std::sqrt(eps) * size;
+      previous_change = change;
+    }
+    if (!converged) return false;
+    stages();
+    if (!stage_matrix(Q, h, terms, lu)) return false;
+    for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I)
+      for (int r = 0; r < n; ++r) F[I][r] = T(Fd[I][r]);
+    return true;
   }
 
   /// The sweeps allowed: opt.max_iterations per 16 decimal digits of T (rounded up). The
@@ -418,7 +533,13 @@ class lpf_fixed_point_engine {
   Sys sys_;
   gauss_nystrom_coefficients<T, S> k_;
   mat<T, n> minv_;
+  bool unit_mass_ = minv_ == mat<T, n>::Identity();
   std::array<std::array<T, S>, S> extrapolate_{};
+  /// mu, the extrapolation and M^{-1} rounded to double, for presolve_in_double.
+  struct {
+    std::array<std::array<double, S>, S> mu{}, extrapolate{};
+    mat<double, n> minv = mat<double, n>::Zero();
+  } in_double_;
   mutable fixed_point_memory<T, n, S> memory_;
 };
 
