@@ -71,8 +71,15 @@ void check_coefficients() {
   using std::abs;
   const auto k = schemes::detail::gauss_nystrom_coefficients<T, S>::make();
   // Exact mathematics: the stored relations hold with no rounding at all (checked in `wide`,
-  // where every difference of them is exact).
+  // where every difference of them is exact): symplecticity, and the symmetry
+  // mu_i'j' = mu_ij + c_j - c_i (i' = S-1-i) that mu_combination relies on.
   CHECK(symplecticity_violation(k, S) == wide(0));
+  for (int i = 0; i < S; ++i)
+    for (int j = 0; j < S; ++j) {
+      const auto I = static_cast<std::size_t>(i), J = static_cast<std::size_t>(j);
+      const auto Im = static_cast<std::size_t>(S - 1 - i), Jm = static_cast<std::size_t>(S - 1 - j);
+      CHECK(wide(k.mu[Im][Jm]) - wide(k.mu[I][J]) == wide(k.c[J]) - wide(k.c[I]));
+    }
   // A second computation in 100 digits: each stored value is the exact one rounded to the grid
   // (within one grid unit; the grid is a power-of-two multiple of T's epsilon, at most 2^4).
   const auto w = schemes::detail::gauss_nystrom_coefficients<wide, S>::make();

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include <Eigen/Core>
+#include "geomint/core/elementary.hpp"
 #include "geomint/linalg/types.hpp"
 
 namespace geomint {
@@ -165,7 +166,7 @@ class lu_in_double {
     linalg::detail::lu_solve<double, int>(a_.data(), N, row_.data(), col_.data(), y.data());
     for (int i = 0; i < N; ++i) {
       if (!std::isfinite(y[static_cast<std::size_t>(i)])) return false;
-      x[i] = T(y[static_cast<std::size_t>(i)]);
+      x[i] = from_double<T>(y[static_cast<std::size_t>(i)]);
     }
     return true;
   }

@@ -44,6 +44,7 @@
 #include "geomint/core/basis.hpp"
 #include "geomint/core/nodes.hpp"
 #include "geomint/core/quadrature.hpp"
+#include "geomint/linalg/dot.hpp"
 #include "geomint/linalg/lu_small.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
 #include "geomint/schemes/step_skeleton.hpp"
@@ -52,7 +53,8 @@ namespace geomint {
 namespace schemes::detail {
 
 /// The coefficients c, e = 1 - c, b and mu of the s-stage Gauss Nystrom collocation method,
-/// stored so that the symplecticity conditions hold exactly in T (see the top of the file).
+/// stored so that the symplecticity conditions, and the symmetry mu_i'j' = mu_ij + c_j - c_i
+/// (i' = s-1-i), hold exactly in T (see the top of the file).
 template <class T, int S>
 struct gauss_nystrom_coefficients {
   std::array<T, S> c{}, e{}, b{};
@@ -105,11 +107,21 @@ struct gauss_nystrom_coefficients {
       if (i < mirror) k.c[static_cast<std::size_t>(i)] = T(1) - k.c[static_cast<std::size_t>(mirror)];
     }
     for (int i = 0; i < S; ++i) k.e[static_cast<std::size_t>(i)] = T(1) - k.c[static_cast<std::size_t>(i)];
+    // Each orbit {(i, j), (j, i), (i', j'), (j', i')} (i' = S-1-i, the mirror stage c_i' = 1 - c_i)
+    // from one rounded value: the transpose by mu_ji = mu_ij + e_i - e_j (symplectic), the mirror
+    // by mu_i'j' = mu_ij + c_j - c_i (the method's symmetry), and mu_j'i' = mu_ij (both).
+    std::array<std::array<bool, S>, S> done{};
     for (int i = 0; i < S; ++i)
       for (int j = i; j < S; ++j) {
         const auto I = static_cast<std::size_t>(i), J = static_cast<std::size_t>(j);
-        k.mu[I][J] = on_grid(mu_exact[I][J]);
-        if (j != i) k.mu[J][I] = k.mu[I][J] + (k.e[I] - k.e[J]);
+        if (done[I][J]) continue;
+        const auto Im = static_cast<std::size_t>(S - 1 - i), Jm = static_cast<std::size_t>(S - 1 - j);
+        const T m = on_grid(mu_exact[I][J]);
+        k.mu[I][J] = m;
+        k.mu[J][I] = m + (k.e[I] - k.e[J]);
+        k.mu[Im][Jm] = m + (k.c[J] - k.c[I]);
+        k.mu[Jm][Im] = m;
+        done[I][J] = done[J][I] = done[Im][Jm] = done[Jm][Im] = true;
       }
     return k;
   }
@@ -137,6 +149,8 @@ template <class Sys, class T, int M>
 class lpf_fixed_point_engine {
  public:
   static constexpr int S = M - 1;
+  /// The stage pairs (i, S-1-i); with S odd, stage H is its own mirror.
+  static constexpr int H = S / 2;
   static constexpr int n = Sys::dof;
   using V = vec<T, n>;
   /// The unknowns: the stage momentum increments F_1..F_S.
@@ -153,6 +167,12 @@ class lpf_fixed_point_engine {
             k_.b[static_cast<std::size_t>(i)] * l[static_cast<std::size_t>(j)] / k_.b[static_cast<std::size_t>(j)];
     }
     if constexpr (!std::is_floating_point_v<T>) {
+      for (std::size_t I = 0; I < static_cast<std::size_t>(H); ++I)
+        for (std::size_t J = 0; J < static_cast<std::size_t>(H); ++J) {
+          const std::size_t Jm = static_cast<std::size_t>(S) - 1 - J;
+          mirror_sum_[I][J] = (k_.mu[I][J] + k_.mu[I][Jm]) / T(2);  // exact: grid values
+          mirror_difference_[I][J] = (k_.mu[I][J] - k_.mu[I][Jm]) / T(2);
+        }
       for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I)
         for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) {
           in_double_.mu[I][J] = static_cast<double>(k_.mu[I][J]);
@@ -334,11 +354,17 @@ class lpf_fixed_point_engine {
     }
     for (int it = 1; it <= budget; ++it) {
       st.iterations = it;
-      std::array<V, S> next;
+      std::array<V, S> next, z;
+      // Newton's pass sees one F throughout: its combinations at once (mu_combination); the
+      // sweeps update F stage by stage.
+      if constexpr (!std::is_floating_point_v<T>) {
+        if (newton) z = mu_combination(F);
+      }
       T change(0), size(0);
       for (int i = 0; i < S; ++i) {
         const auto I = static_cast<std::size_t>(i);
-        const V Q = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
+        const V Q = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(newton ? z[I] : mu_row(I, F))),
+                                terms.exact_offsets);
         next[I] = terms.hb[I] * force(Q);
         if (!all_finite(next[I])) {
           st.reason = step_failure::non_finite_iterate;
@@ -414,8 +440,46 @@ class lpf_fixed_point_engine {
 
   /// sum_j mu_ij F_j.
   V mu_row(std::size_t I, const std::array<V, S>& F) const {
-    V z = V::Zero();
-    for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) z += k_.mu[I][J] * F[J];
+    if constexpr (!std::is_floating_point_v<T>) {
+      V z;
+      for (int r = 0; r < n; ++r) z[r] = linalg::dot(k_.mu[I].data(), &F[0][r], S, n);
+      return z;
+    } else {
+      V z = V::Zero();
+      for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) z += k_.mu[I][J] * F[J];
+      return z;
+    }
+  }
+
+  /// z_i = sum_j mu_ij F_j for every stage, by the mirror symmetry mu_i'j' = mu_ij + c_j - c_i
+  /// (i' = S-1-i): with u_j = F_j + F_j', w_j = F_j - F_j' over the first H stages,
+  ///   z_i  = X_i + Y_i,  z_i' = X_i - Y_i + sum_j e_j F_j - c_i sum_j F_j,
+  ///   X_i = sum_j (mu_ij + mu_ij')/2 u_j (+ mu_iH F_H for odd S),  Y_i = sum_j (mu_ij - mu_ij')/2 w_j,
+  /// the middle row of odd S directly: about S^2/2 + 3S products where the rows take S^2.
+  /// (The sums of products by linalg::dot: exact products, one rounding, for cpp_bin_float.)
+  std::array<V, S> mu_combination(const std::array<V, S>& F) const {
+    static_assert(sizeof(std::array<V, S>) == sizeof(T) * S * n, "stage vectors are stored contiguously");
+    std::array<V, H> u, w;
+    V total = V::Zero(), weighted;
+    for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) total += F[J];
+    for (int r = 0; r < n; ++r) weighted[r] = linalg::dot(k_.e.data(), &F[0][r], S, n);
+    for (std::size_t J = 0; J < static_cast<std::size_t>(H); ++J) {
+      const std::size_t Jm = static_cast<std::size_t>(S) - 1 - J;
+      u[J] = F[J] + F[Jm];
+      w[J] = F[J] - F[Jm];
+    }
+    std::array<V, S> z;
+    for (std::size_t I = 0; I < static_cast<std::size_t>(H); ++I) {
+      V x, y;
+      for (int r = 0; r < n; ++r) {
+        x[r] = linalg::dot(mirror_sum_[I].data(), &u[0][r], H, n);
+        y[r] = linalg::dot(mirror_difference_[I].data(), &w[0][r], H, n);
+      }
+      if constexpr (S % 2 == 1) x += k_.mu[I][static_cast<std::size_t>(H)] * F[static_cast<std::size_t>(H)];
+      z[I] = x + y;
+      z[static_cast<std::size_t>(S) - 1 - I] = V(x - y) + V(weighted - k_.c[I] * total);
+    }
+    if constexpr (S % 2 == 1) z[static_cast<std::size_t>(H)] = mu_row(static_cast<std::size_t>(H), F);
     return z;
   }
 
@@ -482,8 +546,8 @@ class lpf_fixed_point_engine {
     } else {
       for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) Fd[I] = hb[I] * force_d(Vd(qd + base[I]));
     }
-    // Newton's method, the matrix refreshed while the iteration is far from its solution
-    // (a correction above sqrt(eps) of the increments) and once more at the end.
+    // Simplified Newton's method: the matrix formed at the start, again where the iteration
+    // contracts by less than 1/16, and once more at the end, at the solution.
     double previous_change = std::numeric_limits<double>::infinity();
     bool refresh = true, converged = false;
     for (int it = 1; it <= opt.max_iterations && !converged; ++it) {
@@ -509,14 +573,14 @@ class lpf_fixed_point_engine {
       // eps, or one that stopped shrinking below eps^(2/3).
       converged = change <= 4 * eps * size || (it > 1 && rate_bounds_error(change / previous_change, change, size)) ||
                   (change >= previous_change && change <= floor_level * size);
-      refresh = change > std::sqrt(eps) * size;
+      refresh = it > 1 && change > previous_change / 16;
       previous_change = change;
     }
     if (!converged) return false;
     stages();
     if (!stage_matrix(Q, h, terms, lu)) return false;
     for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I)
-      for (int r = 0; r < n; ++r) F[I][r] = T(Fd[I][r]);
+      for (int r = 0; r < n; ++r) F[I][r] = from_double<T>(Fd[I][r]);
     return true;
   }
 
@@ -535,6 +599,8 @@ class lpf_fixed_point_engine {
   mat<T, n> minv_;
   bool unit_mass_ = minv_ == mat<T, n>::Identity();
   std::array<std::array<T, S>, S> extrapolate_{};
+  /// (mu_ij + mu_ij')/2 and (mu_ij - mu_ij')/2 for i, j < H (multiprecision; mu_combination).
+  std::array<std::array<T, H>, H> mirror_sum_{}, mirror_difference_{};
   /// mu, the extrapolation and M^{-1} rounded to double, for presolve_in_double.
   struct {
     std::array<std::array<double, S>, S> mu{}, extrapolate{};

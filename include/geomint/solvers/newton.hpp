@@ -70,18 +70,23 @@ T epsilon_two_thirds() {
   if constexpr (std::is_floating_point_v<T>) {
     return std::cbrt(a);
   } else {
-    using std::frexp;
-    using std::ldexp;
-    int e = 0;
-    frexp(a, &e);  // a = f 2^e with f in [1/2, 1)
-    T x = ldexp(T(1), e / 3);
-    x = (T(2) * x + a / (x * x)) / T(3);  // now x >= cbrt(a) (AM-GM), and the iteration decreases
-    for (int it = 0; it < 200; ++it) {
-      const T next = (T(2) * x + a / (x * x)) / T(3);
-      if (!(next < x)) break;
-      x = next;
-    }
-    return x;
+    // Computed once per type (a function-local static, thread-safe): the iteration costs as much
+    // as a small step's arithmetic.
+    static const T value = [&a] {
+      using std::frexp;
+      using std::ldexp;
+      int e = 0;
+      frexp(a, &e);  // a = f 2^e with f in [1/2, 1)
+      T x = ldexp(T(1), e / 3);
+      x = (T(2) * x + a / (x * x)) / T(3);  // now x >= cbrt(a) (AM-GM), and the iteration decreases
+      for (int it = 0; it < 200; ++it) {
+        const T next = (T(2) * x + a / (x * x)) / T(3);
+        if (!(next < x)) break;
+        x = next;
+      }
+      return x;
+    }();
+    return value;
   }
 }
 
