@@ -218,19 +218,17 @@ class lpf_fixed_point_engine {
     if constexpr (!std::is_floating_point_v<T>) {
       if (opt.double_jacobian) presolved = presolve_in_double(q, tau, terms, continues ? &mem->F : nullptr, F, lu, opt);
     }
-    if (presolved) {
-      // F holds the double solution.
-    } else if (continues) {
+    if (!presolved && continues) {
       for (int i = 0; i < S; ++i) {
         V x = V::Zero();
         for (int j = 0; j < S; ++j) x += extrapolate_[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * mem->F[static_cast<std::size_t>(j)];
         F[static_cast<std::size_t>(i)] = x;
       }
-    } else {
+    } else if (!presolved) {
       for (int i = 0; i < S; ++i)
         F[static_cast<std::size_t>(i)] = terms.hb[static_cast<std::size_t>(i)] * force(V(q + (tau * k_.c[static_cast<std::size_t>(i)]) * v));
     }
-    step_status st = iterate(q, tau, terms, F, opt, presolved ? &lu : nullptr);
+    step_status st = iterate(q, tau, terms, F, opt, lu, presolved);
     if (!st) {
       if (mem) mem->valid = false;
       return st;
@@ -319,14 +317,15 @@ class lpf_fixed_point_engine {
   V force(const V& x) const { return lagrangian_derivatives<Sys, T>::lagrangian_q(sys_, x, V::Zero()); }
 
   /// F <- tau b_i f(Q_i(F)) (Jacobi sweeps in built-in types, Gauss-Seidel in multiprecision),
-  /// or in multiprecision F <- F + (dG/dF)^{-1} (tau b f(Q(F)) - F) with dG/dF in double
-  /// (stage_matrix), until the increments stop changing: exactly (a fixed point in T),
+  /// or in multiprecision F <- F + (dG/dF)^{-1} (tau b f(Q(F)) - F) with dG/dF in double (in
+  /// `lu`, already factorised by presolve_in_double if `factorised`, else formed here by
+  /// stage_matrix), until the increments stop changing: exactly (a fixed point in T),
   /// or, once below eps^(2/3) relative, when the change has grown twice in a row (the
   /// round-off floor), or (opt.stop_on_rate) when the rate bounds the change left below eps. A
   /// non-finite iterate, two growths in a row above that level, or the iteration budget
   /// (sweep_budget) spent above `tolerance_ulps` eps is a failure.
   step_status iterate(const V& q, const T& tau, const stage_terms& terms, std::array<V, S>& F,
-                      const newton_options<T>& opt, const lu_in_double<S * n>* factorised = nullptr) const {
+                      const newton_options<T>& opt, lu_in_double<S * n>& lu, bool factorised) const {
     using std::abs;
     const T eps = std::numeric_limits<T>::epsilon();
     const T floor_level = epsilon_two_thirds<T>();
@@ -336,11 +335,9 @@ class lpf_fixed_point_engine {
     int growth = 0;
     // Multiprecision (opt.double_jacobian): simplified Newton on the stage equations with their
     // matrix in double (stage_matrix); otherwise, or where double cannot hold the matrix, sweeps.
-    lu_in_double<S * n> lu;
     bool newton = false;
     if constexpr (!std::is_floating_point_v<T>) {
       if (factorised) {
-        lu = *factorised;
         newton = true;
       } else if (opt.double_jacobian) {
         std::array<vec<double, n>, S> Q;

@@ -44,7 +44,9 @@ struct newton_options {
   /// precision; each iteration contracts the error by about kappa(J) 1e-16 (plus the matrix's
   /// staleness) instead of quadratically, while the LU and its solves cost double's arithmetic
   /// instead of T's. The solver falls back to T where double cannot hold the matrix or the correction, or
-  /// where the double matrix stops the contraction. No effect in built-in types.
+  /// where the double matrix stops the contraction. The fixed-point form (lpf_fixed_point) also
+  /// solves its stage equations in double first and iterates in T from there. No effect in
+  /// built-in types.
   bool double_jacobian = !std::is_floating_point_v<T>;
 
   void validate() const {
