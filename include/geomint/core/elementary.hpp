@@ -177,9 +177,9 @@ T from_double(double x) {
     if (std::isfinite(x)) {
       using std::ldexp;
       int e = 0;
+      static_assert(std::numeric_limits<double>::digits == 53, "geomint::from_double: IEEE double expected");
       const double m = std::frexp(x, &e);  // x = m 2^e, |m| in [1/2, 1): m 2^53 is an integer
-      return T(ldexp(T(static_cast<long long>(std::ldexp(m, std::numeric_limits<double>::digits))),
-                     e - std::numeric_limits<double>::digits));
+      return T(ldexp(T(static_cast<long long>(m * 0x1p53)), e - std::numeric_limits<double>::digits));
     }
   }
   return T(x);
@@ -206,9 +206,9 @@ T inverse_sqrt(const T& x) {
     const double t = high * p, te = std::fma(high, p, -t);
     const double r = (1 - t) - (te + high * pe + low * p);
     T y = from_double<T>(y0) + from_double<T>(y0 * r / 2);
-    const T half = T(1) / T(2), half_x = half * x;
+    using std::ldexp;
     for (int bits = 2 * std::numeric_limits<double>::digits - 3; bits < std::numeric_limits<T>::digits + 1; bits = 2 * bits - 1)
-      y += y * T(half - half_x * y * y);
+      y += ldexp(T(y * T(T(1) - x * y * y)), -1);  // (halving by the exponent: no division)
     return y;
   } else {
     return T(T(1) / sqrt(x));

@@ -208,6 +208,7 @@ class lpf_fixed_point_engine {
       terms.hb[I] = tau * k_.b[I];
       terms.cv[I] = k_.c[I] * v;
       terms.offset[I] = carry ? V(carry->q + tau * V(k_.c[I] * dv)) : V::Zero();
+      if constexpr (!std::is_floating_point_v<T>) terms.base[I] = terms.offset[I] + tau * terms.cv[I];
     }
     std::array<V, S> F;
     const bool continues = mem && mem->continues(q, p, tau);
@@ -233,8 +234,8 @@ class lpf_fixed_point_engine {
       if (mem) mem->valid = false;
       return st;
     }
-    V se = V::Zero();
-    for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) se += k_.e[I] * F[I];
+    V se;
+    for (int r = 0; r < n; ++r) se[r] = linalg::dot(k_.e.data(), &F[0][r], S, n);
     const V rest = dv + inverse_mass(se);
     phase_carry<T, n> carry_next;
     if (carry) carry_next = *carry;
@@ -268,6 +269,8 @@ class lpf_fixed_point_engine {
   struct stage_terms {
     std::array<T, S> hb;
     std::array<V, S> cv, offset;
+    /// offset_i + tau c_i v (multiprecision): stage i is q + (base_i + tau M^{-1} z_i).
+    std::array<V, S> base;
     bool exact_offsets = false;
   };
 
@@ -360,8 +363,8 @@ class lpf_fixed_point_engine {
       T change(0), size(0);
       for (int i = 0; i < S; ++i) {
         const auto I = static_cast<std::size_t>(i);
-        const V Q = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(newton ? z[I] : mu_row(I, F))),
-                                terms.exact_offsets);
+        const V Q = newton ? V(q + V(terms.base[I] + tau * inverse_mass(z[I])))
+                           : stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
         next[I] = terms.hb[I] * force(Q);
         if (!all_finite(next[I])) {
           st.reason = step_failure::non_finite_iterate;
@@ -522,7 +525,7 @@ class lpf_fixed_point_engine {
     for (int i = 0; i < S; ++i) {
       const auto I = static_cast<std::size_t>(i);
       hb[I] = static_cast<double>(terms.hb[I]);
-      for (int r = 0; r < n; ++r) base[I][r] = static_cast<double>(T(terms.offset[I][r] + tau * terms.cv[I][r]));
+      for (int r = 0; r < n; ++r) base[I][r] = static_cast<double>(terms.base[I][r]);
     }
     auto force_d = [&](const Vd& x) { return lagrangian_derivatives<Sys, double>::lagrangian_q(sys_, x, Vd::Zero()); };
     auto stages = [&] {
