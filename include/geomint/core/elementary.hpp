@@ -168,9 +168,9 @@ bool sin_cos_by_quadrant(const T& x, std::pair<T, T>& out) {
 }  // namespace core::detail
 
 /// The double x in T, exactly. In multiprecision (core::detail::refines_from_double_v) through
-/// its 53-bit integer mantissa and an exponent shift (frexp, ldexp), five times faster than
-/// Boost's conversion from double for a 50-digit cpp_bin_float; non-finite x, and other types,
-/// by T's own conversion.
+/// its 53-bit integer mantissa and an exponent shift (frexp, ldexp), much cheaper than Boost's
+/// generic conversion from a floating type; non-finite x, and other types, by T's own
+/// conversion.
 template <class T>
 T from_double(double x) {
   if constexpr (core::detail::refines_from_double_v<T>) {
@@ -189,8 +189,7 @@ T from_double(double x) {
 /// a seed of about 103 bits from double-double arithmetic (1 / sqrt of x's leading double, and
 /// one Newton step y + y (1 - x y^2) / 2 with x to two doubles and the products exact by fma),
 /// then Newton's iteration in T, which about doubles the correct bits each time (one iteration
-/// for 50 digits, two for 100; 4.5 times faster than Boost's 1 / sqrt for a 50-digit
-/// cpp_bin_float). Where double cannot hold x as a positive normal number (and for x <= 0 or
+/// for 50 digits, two for 100). Where double cannot hold x as a positive normal number (and for x <= 0 or
 /// not finite): 1 / sqrt(x) in T. Other types: 1 / sqrt(x).
 template <class T>
 T inverse_sqrt(const T& x) {
@@ -217,8 +216,8 @@ T inverse_sqrt(const T& x) {
 
 /// (sin x, cos x), within a few units of the last place of each. In multiprecision
 /// (core::detail::refines_from_double_v): for |x| < 9/8 from the table and the Taylor series of
-/// the offset (core::detail::sine_reduction; 2.5 times faster than Boost's sin alone for a
-/// 50-digit cpp_bin_float), further out by quadrant (core::detail::sin_cos_by_quadrant: one of
+/// the offset (core::detail::sine_reduction: about 16 multiplications for 50 digits), further
+/// out by quadrant (core::detail::sin_cos_by_quadrant: one of
 /// the scalar's sin and cos). Elsewhere, and in other types: the scalar's own sin and cos.
 template <class T>
 std::pair<T, T> sin_cos(const T& x) {

@@ -40,20 +40,16 @@ bool lu_factor(T* a, Size size, int* row, int* col, pivoting search = pivoting::
     }
   const T tiny = T(n) * std::numeric_limits<T>::epsilon() * scale;
   for (int k = 0; k < n; ++k) {
-    // The largest remaining element, the first in row order among equals; scanned down the
-    // columns (contiguous).
     int pr = k, pc = k;
     T best(-1);
     const int last_column = search == pivoting::complete ? n : k + 1;
-    for (int j = k; j < last_column; ++j)
-      for (int i = k; i < n; ++i) {
-        const T v = abs(at(i, j));
-        if (v > best || (v == best && i < pr)) {
-          best = v;
+    for (int i = k; i < n; ++i)
+      for (int j = k; j < last_column; ++j)
+        if (abs(at(i, j)) > best) {
+          best = abs(at(i, j));
           pr = i;
           pc = j;
         }
-      }
     if (!(best > tiny)) return false;
     row[k] = pr;
     col[k] = pc;
@@ -64,13 +60,11 @@ bool lu_factor(T* a, Size size, int* row, int* col, pivoting search = pivoting::
         for (int i = 0; i < n; ++i) std::swap(at(i, k), at(i, pc));
     }
     const T inv = T(1) / at(k, k);
-    for (int i = k + 1; i < n; ++i) at(i, k) *= inv;
-    // Column by column, down each column (contiguous): every element gets the same single
-    // update as row by row, so the factors are the same to the bit.
-    for (int j = k + 1; j < n; ++j) {
-      const T u = at(k, j);
-      if (u == T(0)) continue;
-      for (int i = k + 1; i < n; ++i) at(i, j) -= at(i, k) * u;
+    for (int i = k + 1; i < n; ++i) {
+      const T f = at(i, k) * inv;
+      at(i, k) = f;
+      if (f == T(0)) continue;
+      for (int j = k + 1; j < n; ++j) at(i, j) -= f * at(k, j);
     }
   }
   return true;
