@@ -186,8 +186,9 @@ T from_double(double x) {
 }
 
 /// 1 / sqrt(x), within a few ulps of T. In multiprecision (core::detail::refines_from_double_v):
-/// a seed of about 103 bits from double-double arithmetic (1 / sqrt of x's leading double, and
-/// one Newton step y + y (1 - x y^2) / 2 with x to two doubles and the products exact by fma),
+/// a seed of about 103 bits from double-double arithmetic (1 / sqrt of the leading double of x
+/// scaled by a power of 4 into [1/4, 4), and one Newton step y + y (1 - x y^2) / 2 with x to two
+/// doubles and the products exact by fma),
 /// then Newton's iteration in T, which about doubles the correct bits each time (one iteration
 /// for 50 digits, two for 100). Where double cannot hold x as a positive normal number (and for x <= 0 or
 /// not finite): 1 / sqrt(x) in T. Other types: 1 / sqrt(x).
@@ -195,9 +196,18 @@ template <class T>
 T inverse_sqrt(const T& x) {
   using std::sqrt;
   if constexpr (core::detail::refines_from_double_v<T>) {
-    const double high = static_cast<double>(x);
-    if (!(high >= std::numeric_limits<double>::min() && high <= std::numeric_limits<double>::max())) return T(T(1) / sqrt(x));
-    const double low = static_cast<double>(T(x - from_double<T>(high)));
+    const double unscaled = static_cast<double>(x);
+    if (!(unscaled >= std::numeric_limits<double>::min() && unscaled <= std::numeric_limits<double>::max()))
+      return T(T(1) / sqrt(x));
+    // x = 4^k xs with xs in [1/4, 4), exactly, so that the seed's products stay far from
+    // double's underflow: 1/sqrt(x) = 2^-k / sqrt(xs).
+    using std::ldexp;
+    int e = 0;
+    std::frexp(unscaled, &e);
+    const int k = e / 2;
+    const T xs = ldexp(x, -2 * k);
+    const double high = static_cast<double>(xs);
+    const double low = static_cast<double>(T(xs - from_double<T>(high)));
     const double y0 = 1 / std::sqrt(high);
     // r = 1 - x y0^2 to about 2^-104: y0^2 = p + pe and high p = t + te exactly; 1 - t is exact
     // (t is within a few ulps of 1).
@@ -205,10 +215,9 @@ T inverse_sqrt(const T& x) {
     const double t = high * p, te = std::fma(high, p, -t);
     const double r = (1 - t) - (te + high * pe + low * p);
     T y = from_double<T>(y0) + from_double<T>(y0 * r / 2);
-    using std::ldexp;
     for (int bits = 2 * std::numeric_limits<double>::digits - 3; bits < std::numeric_limits<T>::digits + 1; bits = 2 * bits - 1)
-      y += ldexp(T(y * T(T(1) - x * y * y)), -1);  // (halving by the exponent: no division)
-    return y;
+      y += ldexp(T(y * T(T(1) - xs * y * y)), -1);  // (halving by the exponent: no division)
+    return T(ldexp(y, -k));
   } else {
     return T(T(1) / sqrt(x));
   }
