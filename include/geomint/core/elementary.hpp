@@ -20,6 +20,8 @@
 
 #include <boost/math/constants/constants.hpp>
 
+#include "geomint/core/mantissa.hpp"
+
 namespace geomint {
 
 namespace core::detail {
@@ -39,7 +41,7 @@ inline constexpr bool refines_from_double_v =
 template <class T>
 T sqrt_near_one(const T& a) {
   using std::sqrt;
-  T y(sqrt(static_cast<double>(a)));
+  T y(sqrt(to_double(a)));
   for (int bits = std::numeric_limits<double>::digits - 1; bits < std::numeric_limits<T>::digits + 2; bits *= 2)
     y = T(T(y + T(a / y)) / T(2));
   return y;
@@ -107,33 +109,33 @@ struct sine_reduction {
   /// False (nothing computed) unless |x| < 9/8.
   bool reduce(const T& x) {
     using table_type = sine_table<T>;
-    const double xd = static_cast<double>(x);
+    const double xd = to_double(x);
     if (!(std::abs(xd) < double(table_type::entries - 1) / table_type::per_unit)) return false;
     const auto& t = sine_table_of<T>();
     negative = x < T(0);
     j = static_cast<std::size_t>(std::lround(std::abs(xd) * table_type::per_unit));
     const T s = (negative ? T(-x) : x) - t.at[j];
-    const T u = s * s;
+    const T u = fast_product(s, s);
     const auto last = static_cast<std::size_t>(t.terms - 1);
     S = t.odd[last];
     C = t.even[last];
     for (std::size_t k = last; k-- > 0;) {
-      S = S * u + t.odd[k];
-      C = C * u + t.even[k];
+      S = fast_sum(fast_product(S, u), t.odd[k]);
+      C = fast_sum(fast_product(C, u), t.even[k]);
     }
-    S *= s;
+    S = fast_product(S, s);
     return true;
   }
   /// sin(a + s) = sin a C + cos a S, with the sign of x.
   T sine() const {
     const auto& t = sine_table_of<T>();
-    const T v = t.sin[j] * C + t.cos[j] * S;
+    const T v = fast_sum(fast_product(t.sin[j], C), fast_product(t.cos[j], S));
     return negative ? T(-v) : v;
   }
   /// cos(a + s) = cos a C - sin a S.
   T cosine() const {
     const auto& t = sine_table_of<T>();
-    return T(t.cos[j] * C - t.sin[j] * S);
+    return fast_difference(fast_product(t.cos[j], C), fast_product(t.sin[j], S));
   }
 };
 
@@ -196,7 +198,7 @@ template <class T>
 T inverse_sqrt(const T& x) {
   using std::sqrt;
   if constexpr (core::detail::refines_from_double_v<T>) {
-    const double unscaled = static_cast<double>(x);
+    const double unscaled = to_double(x);
     if (!(unscaled >= std::numeric_limits<double>::min() && unscaled <= std::numeric_limits<double>::max()))
       return T(T(1) / sqrt(x));
     // x = 4^k xs with xs in [1/4, 4), exactly, so that the seed's products stay far from
@@ -206,8 +208,8 @@ T inverse_sqrt(const T& x) {
     std::frexp(unscaled, &e);
     const int k = e / 2;
     const T xs = ldexp(x, -2 * k);
-    const double high = static_cast<double>(xs);
-    const double low = static_cast<double>(T(xs - from_double<T>(high)));
+    const double high = to_double(xs);
+    const double low = to_double(fast_difference(xs, from_double<T>(high)));
     const double y0 = 1 / std::sqrt(high);
     // r = 1 - x y0^2 to about 2^-104: y0^2 = p + pe and high p = t + te exactly; 1 - t is exact
     // (t is within a few ulps of 1).
@@ -216,7 +218,7 @@ T inverse_sqrt(const T& x) {
     const double r = (1 - t) - (te + high * pe + low * p);
     T y = from_double<T>(y0) + from_double<T>(y0 * r / 2);
     for (int bits = 2 * std::numeric_limits<double>::digits - 3; bits < std::numeric_limits<T>::digits + 1; bits = 2 * bits - 1)
-      y += ldexp(T(y * T(T(1) - xs * y * y)), -1);  // (halving by the exponent: no division)
+      add_into(y, y, T(ldexp(fast_product(y, fast_difference(T(1), fast_product(fast_product(xs, y), y))), -1)));  // (halving by the exponent)
     return T(ldexp(y, -k));
   } else {
     return T(T(1) / sqrt(x));

@@ -13,7 +13,7 @@
 #include <cstddef>
 #include <type_traits>
 
-#include <boost/multiprecision/cpp_bin_float.hpp>
+#include "geomint/core/mantissa.hpp"
 
 namespace geomint::linalg {
 
@@ -26,25 +26,11 @@ T dot_in_order(const T* a, const T* b, std::size_t count, std::size_t stride) {
   return sum;
 }
 
-template <class T>
-struct exact_dot_backend : std::false_type {};
-
-/// cpp_bin_float numbers with stack storage (Allocator void) and int exponents.
-template <unsigned Digits, boost::multiprecision::backends::digit_base_type Base, int MinE, int MaxE,
-          boost::multiprecision::expression_template_option ET>
-struct exact_dot_backend<
-    boost::multiprecision::number<boost::multiprecision::backends::cpp_bin_float<Digits, Base, void, int, MinE, MaxE>, ET>>
-    : std::true_type {
-  using backend = boost::multiprecision::backends::cpp_bin_float<Digits, Base, void, int, MinE, MaxE>;
-  static constexpr unsigned bits = backend::bit_count;
-  static constexpr unsigned limbs = (bits + 63) / 64;
-};
-
 /// The exact dot product of cpp_bin_float numbers (see the top of the file); false (result
 /// untouched) if a term is not finite or the exponents leave the type's range.
 template <class T>
 bool exact_dot(const T* a, const T* b, std::size_t count, std::size_t stride, T& result) {
-  using traits = exact_dot_backend<T>;
+  using traits = exact_mantissa_arithmetic<T>;
   using backend = typename traits::backend;
   using limb = unsigned long long;
   __extension__ using wide = unsigned __int128;  // (a GCC and Clang extension)
@@ -179,13 +165,12 @@ bool exact_dot(const T* a, const T* b, std::size_t count, std::size_t stride, T&
     }
   }
   if (final_exponent > backend::max_exponent || final_exponent < backend::min_exponent) return false;
-  T out;
-  out.backend().bits().resize(L, L);
-  for (unsigned i = 0; i < L; ++i) out.backend().bits().limbs()[i] = mantissa[i];
-  out.backend().bits().normalize();
-  out.backend().exponent() = static_cast<int>(final_exponent);
-  out.backend().sign() = negative_result;
-  result = out;
+  backend& out = result.backend();  // (written in place: a copy of T moves its limbs by memmove)
+  out.bits().resize(L, L);
+  for (unsigned i = 0; i < L; ++i) out.bits().limbs()[i] = mantissa[i];
+  out.bits().normalize();
+  out.exponent() = static_cast<int>(final_exponent);
+  out.sign() = negative_result;
   return true;
 }
 }  // namespace detail
@@ -194,11 +179,12 @@ bool exact_dot(const T* a, const T* b, std::size_t count, std::size_t stride, T&
 /// cpp_bin_float (see the top of the file), in order otherwise.
 template <class T>
 T dot(const T* a, const T* b, std::size_t count, std::size_t stride = 1) {
-  if constexpr (detail::exact_dot_backend<T>::value) {
-    T result;
+  T result;  // (one named result on every path: returned without a copy)
+  if constexpr (exact_mantissa_arithmetic_v<T>) {
     if (detail::exact_dot(a, b, count, stride, result)) return result;
   }
-  return detail::dot_in_order(a, b, count, stride);
+  result = detail::dot_in_order(a, b, count, stride);
+  return result;
 }
 
 }  // namespace geomint::linalg

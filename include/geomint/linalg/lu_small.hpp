@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include "geomint/core/elementary.hpp"
+#include "geomint/core/mantissa.hpp"
 #include "geomint/linalg/types.hpp"
 
 namespace geomint {
@@ -60,6 +61,20 @@ bool lu_factor(T* a, Size size, int* row, int* col, pivoting search = pivoting::
         for (int i = 0; i < n; ++i) std::swap(at(i, k), at(i, pc));
     }
     const T inv = T(1) / at(k, k);
+    if (search == pivoting::partial) {
+      // By columns (contiguous): the same products and differences as the rows below, in
+      // another order. (Complete pivoting keeps the rows: faster for the small compile-time
+      // sizes it serves.)
+      for (int i = k + 1; i < n; ++i) at(i, k) *= inv;
+      for (int j = k + 1; j < n; ++j) {
+        const T u = at(k, j);
+        if (u == T(0)) continue;
+        T* column = &at(0, j);
+        const T* multipliers = &at(0, k);
+        for (int i = k + 1; i < n; ++i) column[i] -= multipliers[i] * u;
+      }
+      continue;
+    }
     for (int i = k + 1; i < n; ++i) {
       const T f = at(i, k) * inv;
       at(i, k) = f;
@@ -139,7 +154,7 @@ class lu_in_double {
   template <class Derived>
   bool factor(const Eigen::MatrixBase<Derived>& A) {
     for (int j = 0; j < N; ++j)
-      for (int i = 0; i < N; ++i) at(i, j) = static_cast<double>(A(i, j));
+      for (int i = 0; i < N; ++i) at(i, j) = to_double(A(i, j));
     return factor_in_place();
   }
   /// Element (i, j) of the matrix to factorise, for callers that fill it in double directly.
@@ -154,7 +169,7 @@ class lu_in_double {
   bool solve(const vec<T, N>& b, vec<T, N>& x) const {
     std::array<double, N> y;
     for (int i = 0; i < N; ++i) {
-      y[static_cast<std::size_t>(i)] = static_cast<double>(b[i]);
+      y[static_cast<std::size_t>(i)] = to_double(b[i]);
       if (!std::isfinite(y[static_cast<std::size_t>(i)])) return false;
     }
     linalg::detail::lu_solve<double, int>(a_.data(), N, row_.data(), col_.data(), y.data());

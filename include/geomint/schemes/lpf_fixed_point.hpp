@@ -42,6 +42,7 @@
 #include <type_traits>
 
 #include "geomint/core/basis.hpp"
+#include "geomint/core/mantissa.hpp"
 #include "geomint/core/nodes.hpp"
 #include "geomint/core/quadrature.hpp"
 #include "geomint/linalg/dot.hpp"
@@ -206,9 +207,9 @@ class lpf_fixed_point_engine {
     for (int i = 0; i < S; ++i) {
       const auto I = static_cast<std::size_t>(i);
       terms.hb[I] = tau * k_.b[I];
-      terms.cv[I] = k_.c[I] * v;
-      terms.offset[I] = carry ? V(carry->q + tau * V(k_.c[I] * dv)) : V::Zero();
-      if constexpr (!std::is_floating_point_v<T>) terms.base[I] = terms.offset[I] + tau * terms.cv[I];
+      terms.cv[I] = scaled(k_.c[I], v);
+      terms.offset[I] = carry ? V(carry->q + scaled(tau, scaled(k_.c[I], dv))) : V::Zero();
+      if constexpr (!std::is_floating_point_v<T>) terms.base[I] = terms.offset[I] + scaled(tau, terms.cv[I]);
     }
     std::array<V, S> F;
     const bool continues = mem && mem->continues(q, p, tau);
@@ -227,7 +228,7 @@ class lpf_fixed_point_engine {
       }
     } else if (!presolved) {
       for (int i = 0; i < S; ++i)
-        F[static_cast<std::size_t>(i)] = terms.hb[static_cast<std::size_t>(i)] * force(V(q + (tau * k_.c[static_cast<std::size_t>(i)]) * v));
+        F[static_cast<std::size_t>(i)] = scaled(terms.hb[static_cast<std::size_t>(i)], force(V(q + scaled(T(tau * k_.c[static_cast<std::size_t>(i)]), v))));
     }
     step_status st = iterate(q, tau, terms, F, opt, lu, presolved);
     if (!st) {
@@ -249,7 +250,7 @@ class lpf_fixed_point_engine {
     if (!updated) {
       V dp = V::Zero();
       for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) dp += F[I];
-      const V dq = tau * V(v + rest);
+      const V dq = scaled(tau, V(v + rest));
       q1 = apply_end_update<T, n>(q, dq, true, carry ? &carry_next.q : nullptr);
       p1 = apply_end_update<T, n>(p, dp, true, carry ? &carry_next.p : nullptr);
     }
@@ -347,9 +348,9 @@ class lpf_fixed_point_engine {
         for (int i = 0; i < S; ++i) {
           const auto I = static_cast<std::size_t>(i);
           const V Qt = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
-          for (int r = 0; r < n; ++r) Q[I][r] = static_cast<double>(Qt[r]);
+          for (int r = 0; r < n; ++r) Q[I][r] = to_double(Qt[r]);
         }
-        newton = stage_matrix(Q, static_cast<double>(tau), terms, lu);
+        newton = stage_matrix(Q, to_double(tau), terms, lu);
       }
     }
     for (int it = 1; it <= budget; ++it) {
@@ -363,9 +364,9 @@ class lpf_fixed_point_engine {
       T change(0), size(0);
       for (int i = 0; i < S; ++i) {
         const auto I = static_cast<std::size_t>(i);
-        const V Q = newton ? V(q + V(terms.base[I] + tau * inverse_mass(z[I])))
+        const V Q = newton ? plus(q, plus(terms.base[I], scaled(tau, inverse_mass(z[I]))))
                            : stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
-        next[I] = terms.hb[I] * force(Q);
+        next[I] = scaled(terms.hb[I], force(Q));
         if (!all_finite(next[I])) {
           st.reason = step_failure::non_finite_iterate;
           return st;
@@ -392,7 +393,7 @@ class lpf_fixed_point_engine {
         if (newton) {
           vec<T, S * n> r, d;
           for (int i = 0; i < S; ++i)
-            r.template segment<n>(i * n) = next[static_cast<std::size_t>(i)] - F[static_cast<std::size_t>(i)];
+            r.template segment<n>(i * n) = minus(next[static_cast<std::size_t>(i)], F[static_cast<std::size_t>(i)]);
           if (!lu.solve(r, d)) {
             newton = false;  // beyond double's range: sweeps from here
           } else {
@@ -400,7 +401,7 @@ class lpf_fixed_point_engine {
             size = T(0);
             for (int i = 0; i < S; ++i) {
               const auto I = static_cast<std::size_t>(i);
-              next[I] = F[I] + d.template segment<n>(i * n);
+              next[I] = plus(F[I], d.template segment<n>(i * n));
               for (int c = 0; c < n; ++c) {
                 const T dc = abs(T(d[i * n + c]));
                 if (dc > change) change = dc;
@@ -435,6 +436,24 @@ class lpf_fixed_point_engine {
     return st;
   }
 
+  /// a x, a + b and a - b, one rounding per component (multiply_into, add_into: for
+  /// cpp_bin_float on the mantissas, without Boost's temporaries).
+  static V scaled(const T& a, const V& x) {
+    V out;
+    for (int r = 0; r < n; ++r) multiply_into(out[r], a, x[r]);
+    return out;
+  }
+  static V plus(const V& a, const V& b) {
+    V out;
+    for (int r = 0; r < n; ++r) add_into(out[r], a[r], b[r]);
+    return out;
+  }
+  static V minus(const V& a, const V& b) {
+    V out;
+    for (int r = 0; r < n; ++r) subtract_into(out[r], a[r], b[r]);
+    return out;
+  }
+
   /// M^{-1} x, skipped for a unit mass matrix (exact either way).
   V inverse_mass(const V& x) const { return unit_mass_ ? x : V(minv_ * x); }
 
@@ -461,12 +480,12 @@ class lpf_fixed_point_engine {
     static_assert(sizeof(std::array<V, S>) == sizeof(T) * S * n, "stage vectors are stored contiguously");
     std::array<V, H> u, w;
     V total = V::Zero(), weighted;
-    for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) total += F[J];
+    for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) total = plus(total, F[J]);
     for (int r = 0; r < n; ++r) weighted[r] = linalg::dot(k_.e.data(), &F[0][r], S, n);
     for (std::size_t J = 0; J < static_cast<std::size_t>(H); ++J) {
       const std::size_t Jm = static_cast<std::size_t>(S) - 1 - J;
-      u[J] = F[J] + F[Jm];
-      w[J] = F[J] - F[Jm];
+      u[J] = plus(F[J], F[Jm]);
+      w[J] = minus(F[J], F[Jm]);
     }
     std::array<V, S> z;
     for (std::size_t I = 0; I < static_cast<std::size_t>(H); ++I) {
@@ -475,9 +494,9 @@ class lpf_fixed_point_engine {
         x[r] = linalg::dot(mirror_sum_[I].data(), &u[0][r], H, n);
         y[r] = linalg::dot(mirror_difference_[I].data(), &w[0][r], H, n);
       }
-      if constexpr (S % 2 == 1) x += k_.mu[I][static_cast<std::size_t>(H)] * F[static_cast<std::size_t>(H)];
-      z[I] = x + y;
-      z[static_cast<std::size_t>(S) - 1 - I] = V(x - y) + V(weighted - k_.c[I] * total);
+      if constexpr (S % 2 == 1) x = plus(x, scaled(k_.mu[I][static_cast<std::size_t>(H)], F[static_cast<std::size_t>(H)]));
+      z[I] = plus(x, y);
+      z[static_cast<std::size_t>(S) - 1 - I] = plus(minus(x, y), minus(weighted, scaled(k_.c[I], total)));
     }
     if constexpr (S % 2 == 1) z[static_cast<std::size_t>(H)] = mu_row(static_cast<std::size_t>(H), F);
     return z;
@@ -494,7 +513,7 @@ class lpf_fixed_point_engine {
       const auto I = static_cast<std::size_t>(i);
       if (!all_finite(Q[I])) return false;
       const mat<double, n> B = lagrangian_derivatives<Sys, double>::hessian(sys_, Q[I], Vd::Zero()).Lqq * in_double_.minv;
-      const double h = static_cast<double>(terms.hb[I]) * tau;
+      const double h = to_double(terms.hb[I]) * tau;
       for (int j = 0; j < S; ++j) {
         const double w = h * in_double_.mu[I][static_cast<std::size_t>(j)];
         for (int r = 0; r < n; ++r)
@@ -516,16 +535,16 @@ class lpf_fixed_point_engine {
     using std::abs;
     const double eps = std::numeric_limits<double>::epsilon();
     const double floor_level = epsilon_two_thirds<double>();
-    const double h = static_cast<double>(tau);
+    const double h = to_double(tau);
     Vd qd;
-    for (int r = 0; r < n; ++r) qd[r] = static_cast<double>(q[r]);
+    for (int r = 0; r < n; ++r) qd[r] = to_double(q[r]);
     // Stage i is q + base_i + tau M^{-1} z_i, base_i = offset_i + tau c_i v.
     std::array<Vd, S> base, Fd, Q;
     std::array<double, S> hb;
     for (int i = 0; i < S; ++i) {
       const auto I = static_cast<std::size_t>(i);
-      hb[I] = static_cast<double>(terms.hb[I]);
-      for (int r = 0; r < n; ++r) base[I][r] = static_cast<double>(terms.base[I][r]);
+      hb[I] = to_double(terms.hb[I]);
+      for (int r = 0; r < n; ++r) base[I][r] = to_double(terms.base[I][r]);
     }
     auto force_d = [&](const Vd& x) { return lagrangian_derivatives<Sys, double>::lagrangian_q(sys_, x, Vd::Zero()); };
     auto stages = [&] {
@@ -538,7 +557,7 @@ class lpf_fixed_point_engine {
     if (previous) {
       std::array<Vd, S> last;
       for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J)
-        for (int r = 0; r < n; ++r) last[J][r] = static_cast<double>((*previous)[J][r]);
+        for (int r = 0; r < n; ++r) last[J][r] = to_double((*previous)[J][r]);
       for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
         Fd[I] = Vd::Zero();
         for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) Fd[I] += in_double_.extrapolate[I][J] * last[J];

@@ -1,0 +1,325 @@
+#pragma once
+/// Products of Boost cpp_bin_float numbers formed on their integer mantissas.
+///
+/// Boost's multiplication of two cpp_bin_float numbers goes through a double-width cpp_int
+/// temporary, a generic normalising shift and a generic rounding, and its result is copied
+/// limb by limb (memmove): about twice the time of the limb products themselves at 50 digits.
+/// `multiply_into` forms the product of the two mantissas exactly (L x L limbs) and rounds it
+/// once, to nearest with ties to even, into the destination: the same result bit for bit
+/// (tests/core/test_mantissa.cpp). Used in the implicit stages' inner loops and in the
+/// elementary functions; linalg/dot.hpp builds its exact dot products on the same access.
+
+#include <bit>
+#include <type_traits>
+
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+namespace geomint {
+
+/// Whether T is a cpp_bin_float whose mantissa geomint reads directly: stack storage
+/// (Allocator void), int exponents, and more than 128 bits, so that the mantissa is an array
+/// of 64-bit limbs (Boost stores narrower ones as one built-in integer).
+template <class T>
+struct exact_mantissa_arithmetic : std::false_type {};
+
+template <unsigned Digits, boost::multiprecision::backends::digit_base_type Base, int MinE, int MaxE,
+          boost::multiprecision::expression_template_option ET>
+  requires(boost::multiprecision::backends::cpp_bin_float<Digits, Base, void, int, MinE, MaxE>::bit_count > 128)
+struct exact_mantissa_arithmetic<
+    boost::multiprecision::number<boost::multiprecision::backends::cpp_bin_float<Digits, Base, void, int, MinE, MaxE>, ET>>
+    : std::true_type {
+  using backend = boost::multiprecision::backends::cpp_bin_float<Digits, Base, void, int, MinE, MaxE>;
+  /// The mantissa's bits p (the leading one at bit p - 1) and its 64-bit limbs.
+  static constexpr unsigned bits = backend::bit_count;
+  static constexpr unsigned limbs = (bits + 63) / 64;
+};
+
+template <class T>
+inline constexpr bool exact_mantissa_arithmetic_v = exact_mantissa_arithmetic<T>::value;
+
+namespace core::detail {
+/// Rounds the W-limb integer `sum` (nonzero, leading one at bit msb; `sticky`: nonzero bits
+/// below it were cut) to p = Traits::bits bits, to nearest with ties to even, into `mantissa`
+/// (L limbs, leading one at bit p - 1). Returns how far the binary point moved: the rounded
+/// value is mantissa 2^(returned), so msb + 1 - p, plus one where rounding up carried out.
+template <class Traits, unsigned W>
+int round_to_mantissa(const unsigned long long (&sum)[W], int msb, bool sticky,
+                      unsigned long long (&mantissa)[Traits::limbs]) {
+  using limb = unsigned long long;
+  constexpr unsigned L = Traits::limbs;
+  constexpr int bits = static_cast<int>(Traits::bits);
+  const int drop = msb + 1 - bits;  // below zero after cancellation: shifted left, exact
+  auto limb_at = [&](long long w) -> limb { return (w >= 0 && w < static_cast<long long>(W)) ? sum[w] : 0; };
+  if (drop < 0) {
+    for (unsigned i = 0; i < L; ++i) {
+      const long long from = static_cast<long long>(drop) + 64LL * i;
+      const long long word = from >= 0 ? from / 64 : -((-from + 63) / 64);  // floor(from / 64)
+      const int offset = static_cast<int>(from - 64 * word);
+      limb v = limb_at(word) >> offset;
+      if (offset != 0) v |= limb_at(word + 1) << (64 - offset);
+      mantissa[i] = v;
+    }
+    return drop;
+  }
+  const auto word = static_cast<unsigned>(drop / 64), offset = static_cast<unsigned>(drop % 64);
+  for (unsigned i = 0; i < L; ++i) {
+    limb v = limb_at(word + i) >> offset;
+    if (offset != 0) v |= limb_at(word + i + 1) << (64 - offset);
+    mantissa[i] = v;
+  }
+  if (drop == 0) return drop;
+  const int half = drop - 1;
+  if (((sum[half / 64] >> (half % 64)) & 1) == 0) return drop;
+  bool above = sticky || (sum[half / 64] & ((limb(1) << (half % 64)) - 1)) != 0;
+  for (int i = 0; i < half / 64 && !above; ++i) above = sum[i] != 0;
+  if (!above && (mantissa[0] & 1) == 0) return drop;  // a tie, already even
+  limb carry = 1;
+  for (unsigned i = 0; i < L && carry != 0; ++i) {
+    mantissa[i] += carry;
+    carry = mantissa[i] == 0 ? 1 : 0;
+  }
+  // Rounding up 2^p - 1 gives 2^p: the mantissa 2^(p-1), one exponent up.
+  constexpr unsigned carry_word = bits / 64, carry_bit = bits % 64;
+  bool overflow = false;
+  if constexpr (carry_word < L) overflow = ((mantissa[carry_word] >> carry_bit) & 1) != 0;
+  else overflow = carry != 0;
+  if (!overflow) return drop;
+  for (unsigned i = 0; i < L; ++i) mantissa[i] = 0;
+  mantissa[(bits - 1) / 64] = limb(1) << ((bits - 1) % 64);
+  return drop + 1;
+}
+
+/// Writes sign, exponent and mantissa into out's backend (no temporary: a copy of a
+/// cpp_bin_float moves its limbs by memmove).
+template <class T>
+void store(T& out, bool negative, long long exponent, const unsigned long long (&mantissa)[exact_mantissa_arithmetic<T>::limbs]) {
+  constexpr unsigned L = exact_mantissa_arithmetic<T>::limbs;
+  auto& result = out.backend();
+  result.bits().resize(L, L);
+  for (unsigned i = 0; i < L; ++i) result.bits().limbs()[i] = mantissa[i];
+  result.exponent() = static_cast<int>(exponent);
+  result.sign() = negative;
+}
+
+/// out = a b rounded to nearest, ties to even, from the exact product of the mantissas (out may
+/// alias a or b); false (out untouched) for a zero, infinite or NaN factor or a result outside the exponent range,
+/// which the caller leaves to Boost.
+template <class T>
+bool exact_product(const T& a, const T& b, T& out) {
+  using traits = exact_mantissa_arithmetic<T>;
+  using backend = typename traits::backend;
+  using limb = unsigned long long;
+  __extension__ using wide = unsigned __int128;  // (a GCC and Clang extension)
+  constexpr unsigned L = traits::limbs;
+  constexpr int bits = static_cast<int>(traits::bits);
+  static_assert(sizeof(limb) * 8 == 64 && sizeof(boost::multiprecision::limb_type) == sizeof(limb),
+                "geomint::exact_product: 64-bit limbs expected");
+  const backend& x = a.backend();
+  const backend& y = b.backend();
+  if (x.exponent() > backend::max_exponent || y.exponent() > backend::max_exponent ||
+      x.exponent() == backend::exponent_zero || y.exponent() == backend::exponent_zero)
+    return false;
+  const limb* mx = x.bits().limbs();
+  const limb* my = y.bits().limbs();
+  limb product[2 * L] = {};
+  for (unsigned i = 0; i < L; ++i) {
+    limb carry = 0;
+    for (unsigned j = 0; j < L; ++j) {
+      const wide t = static_cast<wide>(mx[i]) * my[j] + product[i + j] + carry;
+      product[i + j] = static_cast<limb>(t);
+      carry = static_cast<limb>(t >> 64);
+    }
+    product[i + L] = carry;
+  }
+  // Both mantissas lie in [2^(p-1), 2^p): the product's leading one is at bit 2p - 1 or 2p - 2,
+  // and its value is product 2^(e_x + e_y - 2 (p - 1)).
+  constexpr int top = 2 * bits - 1;
+  const int msb = ((product[top / 64] >> (top % 64)) & 1) != 0 ? top : top - 1;
+  limb mantissa[L];
+  const int moved = round_to_mantissa<traits>(product, msb, false, mantissa);
+  const long long exponent = static_cast<long long>(x.exponent()) + y.exponent() + moved - (bits - 1);
+  if (exponent > backend::max_exponent || exponent < backend::min_exponent) return false;
+  store(out, x.sign() != y.sign(), exponent, mantissa);
+  return true;
+}
+
+/// out = a + b (or a - b with `subtract`) rounded to nearest, ties to even: the smaller
+/// operand aligned to the larger in a frame of L + 2 limbs (a carry limb above, 64 guard bits
+/// below, and a sticky bit for what falls below them), added or subtracted exactly, rounded
+/// once. False (out untouched) for a zero, infinite or NaN operand, an exactly zero result, or
+/// one outside the exponent range, which the caller leaves to Boost. out may alias a or b.
+template <class T>
+bool exact_sum(const T& a, const T& b, bool subtract, T& out) {
+  using traits = exact_mantissa_arithmetic<T>;
+  using backend = typename traits::backend;
+  using limb = unsigned long long;
+  __extension__ using wide = unsigned __int128;
+  constexpr unsigned L = traits::limbs;
+  constexpr unsigned W = L + 2;
+  constexpr int bits = static_cast<int>(traits::bits);
+  const backend& x = a.backend();
+  const backend& y = b.backend();
+  if (x.exponent() > backend::max_exponent || y.exponent() > backend::max_exponent ||
+      x.exponent() == backend::exponent_zero || y.exponent() == backend::exponent_zero)
+    return false;
+  const bool x_negative = x.sign(), y_negative = y.sign() != subtract;
+  // The larger magnitude first.
+  bool x_larger = x.exponent() != y.exponent() ? x.exponent() > y.exponent() : true;
+  if (x.exponent() == y.exponent()) {
+    for (unsigned i = L; i-- > 0;) {
+      if (x.bits().limbs()[i] != y.bits().limbs()[i]) {
+        x_larger = x.bits().limbs()[i] > y.bits().limbs()[i];
+        break;
+      }
+    }
+  }
+  const backend& big = x_larger ? x : y;
+  const backend& small = x_larger ? y : x;
+  const bool negative = x_larger ? x_negative : y_negative;
+  const bool opposite = x_negative != y_negative;
+  const long long gap = static_cast<long long>(big.exponent()) - small.exponent();
+  limb frame[W] = {}, aligned[W] = {};
+  for (unsigned i = 0; i < L; ++i) frame[i + 1] = big.bits().limbs()[i];
+  // small << 64 >> gap, and whether anything nonzero fell off the end.
+  bool sticky = false;
+  const limb* ms = small.bits().limbs();
+  if (gap >= 64LL * (L + 1)) {
+    sticky = true;  // (a nonzero mantissa, entirely below the frame)
+  } else {
+    const auto word = static_cast<unsigned>(gap / 64), shift = static_cast<unsigned>(gap % 64);
+    // shifted[k] = bits 64 (k + word) + shift ... of (ms << 64): source limb k + word - 1 of ms.
+    auto source = [&](long long k) -> limb { return (k >= 0 && k < static_cast<long long>(L)) ? ms[k] : 0; };
+    for (unsigned k = 0; k < W; ++k) {
+      const long long from = static_cast<long long>(k) + word - 1;
+      limb v = source(from) >> shift;
+      if (shift != 0) v |= source(from + 1) << (64 - shift);
+      aligned[k] = v;
+    }
+    // Bits below the frame: source limbs below word - 1, and the low `shift` bits of limb word - 1.
+    for (long long k = 0; k + 1 < static_cast<long long>(word) && !sticky; ++k) sticky = source(k) != 0;
+    if (!sticky && shift != 0) sticky = (source(static_cast<long long>(word) - 1) & ((limb(1) << shift) - 1)) != 0;
+  }
+  limb sum[W];
+  if (!opposite) {
+    limb carry = 0;
+    for (unsigned i = 0; i < W; ++i) {
+      const wide t = static_cast<wide>(frame[i]) + aligned[i] + carry;
+      sum[i] = static_cast<limb>(t);
+      carry = static_cast<limb>(t >> 64);
+    }
+  } else {
+    // big - (aligned + a fraction in (0, 1) if sticky) = (big - aligned - 1) + (1 - fraction):
+    // subtract one more unit and keep the sticky bit for the fraction.
+    limb borrow = sticky ? 1 : 0;
+    for (unsigned i = 0; i < W; ++i) {
+      const wide t = static_cast<wide>(frame[i]) - aligned[i] - borrow;
+      sum[i] = static_cast<limb>(t);
+      borrow = static_cast<limb>(t >> 64) != 0 ? 1 : 0;
+    }
+  }
+  int msb = -1;
+  for (unsigned i = W; i-- > 0;)
+    if (sum[i] != 0) {
+      msb = static_cast<int>(64 * i) + 63 - __builtin_clzll(sum[i]);
+      break;
+    }
+  if (msb < 0) return false;  // exact cancellation: Boost's signed zero
+  limb mantissa[L];
+  const int moved = round_to_mantissa<traits>(sum, msb, sticky, mantissa);
+  // The frame's unit is 2^(e_big - (bits - 1) - 64): the value is mantissa 2^(moved) units.
+  const long long exponent = static_cast<long long>(big.exponent()) - (bits - 1) - 64 + moved + (bits - 1);
+  if (exponent > backend::max_exponent || exponent < backend::min_exponent) return false;
+  store(out, negative, exponent, mantissa);
+  return true;
+}
+}  // namespace core::detail
+
+/// x rounded to the nearest double, ties to even, as static_cast<double>(x) rounds: for
+/// exact_mantissa_arithmetic types from the mantissa's top bits where the result is a normal
+/// double (Boost's conversion shifts the whole mantissa and rounds generically), else the cast.
+template <class T>
+double to_double(const T& x) {
+  if constexpr (exact_mantissa_arithmetic_v<T>) {
+    using traits = exact_mantissa_arithmetic<T>;
+    using backend = typename traits::backend;
+    using limb = unsigned long long;
+    constexpr int bits = static_cast<int>(traits::bits);
+    const backend& b = x.backend();
+    const int e = b.exponent();
+    if (b.exponent() != backend::exponent_zero && e >= -1022 && e <= 1022) {
+      const limb* m = b.bits().limbs();
+      // The top 64 bits (bits - 64 .. bits - 1): 53 kept, the next one the half, the rest and
+      // everything below them the sticky part.
+      constexpr int from = bits - 64;
+      constexpr unsigned word = from / 64, offset = from % 64;
+      limb top = m[word] >> offset;
+      if constexpr (offset != 0) top |= m[word + 1] << (64 - offset);
+      limb kept = top >> 11;
+      if ((top >> 10) & 1) {
+        bool above = (top & 0x3FF) != 0;
+        if constexpr (offset != 0) above = above || (m[word] & ((limb(1) << offset) - 1)) != 0;
+        for (unsigned i = 0; i < word && !above; ++i) above = m[i] != 0;
+        if (above || (kept & 1) != 0) ++kept;
+      }
+      // kept in [2^52, 2^53]: 2^53 is 2^52 one exponent up (e <= 1022 keeps that finite).
+      const int exponent = kept >> 53 ? e + 1 : e;
+      if (kept >> 53) kept >>= 1;
+      const limb pattern = (static_cast<limb>(b.sign()) << 63) | (static_cast<limb>(exponent + 1023) << 52) |
+                           (kept & ((limb(1) << 52) - 1));
+      return std::bit_cast<double>(pattern);
+    }
+  }
+  return static_cast<double>(x);
+}
+
+/// out = a b, rounded once as a * b rounds (out may alias a or b): for
+/// exact_mantissa_arithmetic types on the mantissas (see the top of the file), else a * b.
+template <class T>
+void multiply_into(T& out, const T& a, const T& b) {
+  if constexpr (exact_mantissa_arithmetic_v<T>) {
+    if (core::detail::exact_product(a, b, out)) return;
+  }
+  out = a * b;
+}
+
+/// out = a + b, rounded once as a + b rounds (out may alias a or b): for
+/// exact_mantissa_arithmetic types on the mantissas, else a + b.
+template <class T>
+void add_into(T& out, const T& a, const T& b) {
+  if constexpr (exact_mantissa_arithmetic_v<T>) {
+    if (core::detail::exact_sum(a, b, false, out)) return;
+  }
+  out = a + b;
+}
+
+/// out = a - b (add_into).
+template <class T>
+void subtract_into(T& out, const T& a, const T& b) {
+  if constexpr (exact_mantissa_arithmetic_v<T>) {
+    if (core::detail::exact_sum(a, b, true, out)) return;
+  }
+  out = a - b;
+}
+
+/// a + b, a - b and a b, the values of the operators (add_into, multiply_into).
+template <class T>
+T fast_sum(const T& a, const T& b) {
+  T out;
+  add_into(out, a, b);
+  return out;
+}
+template <class T>
+T fast_difference(const T& a, const T& b) {
+  T out;
+  subtract_into(out, a, b);
+  return out;
+}
+
+template <class T>
+T fast_product(const T& a, const T& b) {
+  T out;
+  multiply_into(out, a, b);
+  return out;
+}
+
+}  // namespace geomint
