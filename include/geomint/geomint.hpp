@@ -12,6 +12,7 @@
 #include "geomint/core/differentiation.hpp"
 #include "geomint/core/quadrature.hpp"
 #include "geomint/core/elementary.hpp"
+#include "geomint/core/mantissa.hpp"
 #include "geomint/core/multiprecision.hpp"
 #include "geomint/core/decimal.hpp"
 #include "geomint/core/dispatch.hpp"

@@ -356,16 +356,23 @@ class lpf_fixed_point_engine {
     for (int it = 1; it <= budget; ++it) {
       st.iterations = it;
       std::array<V, S> next, z;
-      // Newton's pass sees one F throughout: its combinations at once (mu_combination); the
-      // sweeps update F stage by stage.
+      // Newton's pass and the Jacobi sweeps see one F throughout: its combinations at once
+      // (mu_combination; jacobi_combination); the Gauss-Seidel sweeps update F stage by stage.
       if constexpr (!std::is_floating_point_v<T>) {
         if (newton) z = mu_combination(F);
+      } else {
+        z = jacobi_combination(F);
       }
       T change(0), size(0);
       for (int i = 0; i < S; ++i) {
         const auto I = static_cast<std::size_t>(i);
-        const V Q = newton ? plus(q, plus(terms.base[I], scaled(tau, inverse_mass(z[I]))))
-                           : stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
+        V Q;
+        if constexpr (std::is_floating_point_v<T>) {
+          Q = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(z[I])), terms.exact_offsets);
+        } else {
+          Q = newton ? plus(q, plus(terms.base[I], scaled(tau, inverse_mass(z[I]))))
+                     : stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
+        }
         next[I] = scaled(terms.hb[I], force(Q));
         if (!all_finite(next[I])) {
           st.reason = step_failure::non_finite_iterate;
@@ -456,6 +463,17 @@ class lpf_fixed_point_engine {
 
   /// M^{-1} x, skipped for a unit mass matrix (exact either way).
   V inverse_mass(const V& x) const { return unit_mass_ ? x : V(minv_ * x); }
+
+  /// z_i = sum_j mu_ij F_j for every stage (built-in types), by columns: each F_j added to all
+  /// stages at once (contiguous, vectorised), each z_i still summed over j in order as mu_row.
+  std::array<V, S> jacobi_combination(const std::array<V, S>& F) const {
+    std::array<V, S> z;
+    for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) z[I] = V::Zero();
+    for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J)
+      for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I)
+        for (int r = 0; r < n; ++r) z[I][r] += mu_by_column_[J][I] * F[J][r];
+    return z;
+  }
 
   /// sum_j mu_ij F_j.
   V mu_row(std::size_t I, const std::array<V, S>& F) const {
@@ -618,6 +636,13 @@ class lpf_fixed_point_engine {
   mat<T, n> minv_;
   bool unit_mass_ = minv_ == mat<T, n>::Identity();
   std::array<std::array<T, S>, S> extrapolate_{};
+  /// mu transposed: mu_by_column_[j][i] = mu_ij (jacobi_combination).
+  std::array<std::array<T, S>, S> mu_by_column_ = [this] {
+    std::array<std::array<T, S>, S> t{};
+    for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I)
+      for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) t[J][I] = k_.mu[I][J];
+    return t;
+  }();
   /// (mu_ij + mu_ij')/2 and (mu_ij - mu_ij')/2 for i, j < H (multiprecision; mu_combination).
   std::array<std::array<T, H>, H> mirror_sum_{}, mirror_difference_{};
   /// mu, the extrapolation and M^{-1} rounded to double, for presolve_in_double.
