@@ -15,6 +15,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "catch.hpp"
+#include "geomint/core/multiprecision.hpp"
 #include "geomint/core/mantissa.hpp"
 
 namespace {

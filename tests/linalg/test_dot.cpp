@@ -13,6 +13,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "catch.hpp"
+#include "geomint/core/multiprecision.hpp"
 #include "geomint/linalg/dot.hpp"
 
 namespace {

@@ -12,27 +12,15 @@
 #include <bit>
 #include <type_traits>
 
-#include <boost/multiprecision/cpp_bin_float.hpp>
-
 namespace geomint {
 
-/// Whether T is a cpp_bin_float whose mantissa geomint reads directly: stack storage
-/// (Allocator void), int exponents, and more than 128 bits, so that the mantissa is an array
-/// of 64-bit limbs (Boost stores narrower ones as one built-in integer).
+/// Whether T is a number whose mantissa geomint reads directly: false here; true for Boost's
+/// cpp_bin_float with stack storage, int exponents and more than 128 bits, whose mantissa is an
+/// array of 64-bit limbs (core/multiprecision.hpp specialises this, with `backend`, `bits`
+/// (p, the leading one at bit p - 1) and `limbs`; this header parses no Boost.Multiprecision,
+/// so that files with built-in scalars stay fast to compile).
 template <class T>
 struct exact_mantissa_arithmetic : std::false_type {};
-
-template <unsigned Digits, boost::multiprecision::backends::digit_base_type Base, int MinE, int MaxE,
-          boost::multiprecision::expression_template_option ET>
-  requires(boost::multiprecision::backends::cpp_bin_float<Digits, Base, void, int, MinE, MaxE>::bit_count > 128)
-struct exact_mantissa_arithmetic<
-    boost::multiprecision::number<boost::multiprecision::backends::cpp_bin_float<Digits, Base, void, int, MinE, MaxE>, ET>>
-    : std::true_type {
-  using backend = boost::multiprecision::backends::cpp_bin_float<Digits, Base, void, int, MinE, MaxE>;
-  /// The mantissa's bits p (the leading one at bit p - 1) and its 64-bit limbs.
-  static constexpr unsigned bits = backend::bit_count;
-  static constexpr unsigned limbs = (bits + 63) / 64;
-};
 
 template <class T>
 inline constexpr bool exact_mantissa_arithmetic_v = exact_mantissa_arithmetic<T>::value;
@@ -112,8 +100,7 @@ bool exact_product(const T& a, const T& b, T& out) {
   __extension__ using wide = unsigned __int128;  // (a GCC and Clang extension)
   constexpr unsigned L = traits::limbs;
   constexpr int bits = static_cast<int>(traits::bits);
-  static_assert(sizeof(limb) * 8 == 64 && sizeof(boost::multiprecision::limb_type) == sizeof(limb),
-                "geomint::exact_product: 64-bit limbs expected");
+  static_assert(sizeof(*a.backend().bits().limbs()) == sizeof(limb), "geomint::exact_product: 64-bit limbs expected");
   const backend& x = a.backend();
   const backend& y = b.backend();
   if (x.exponent() > backend::max_exponent || y.exponent() > backend::max_exponent ||
@@ -323,3 +310,9 @@ T fast_product(const T& a, const T& b) {
 }
 
 }  // namespace geomint
+
+// The cpp_bin_float specialisation of exact_mantissa_arithmetic, when Boost.Multiprecision is
+// already in use (as linalg/types.hpp does for the Eigen traits).
+#if defined(BOOST_MATH_EXTENDED_REAL_HPP) || defined(BOOST_MP_NUMBER_HPP)
+#include "geomint/core/multiprecision.hpp"
+#endif

@@ -1,7 +1,7 @@
 #pragma once
 /// Dot products sum_k a_k b_k, the inner loop of the implicit stages' combinations.
 ///
-/// For Boost's cpp_bin_float (fixed precision, stack storage) the products are formed exactly
+/// For Boost's cpp_bin_float (fixed precision, stack storage; exact_mantissa_arithmetic) the products are formed exactly
 /// on the integer mantissas, added in one fixed-point accumulator aligned to the largest, and
 /// the sum is rounded once, to nearest with ties to even: a fraction of the time of the
 /// multiply-add loop, whose every product and sum rounds and renormalises a temporary. The
@@ -36,8 +36,7 @@ bool exact_dot(const T* a, const T* b, std::size_t count, std::size_t stride, T&
   __extension__ using wide = unsigned __int128;  // (a GCC and Clang extension)
   constexpr unsigned L = traits::limbs;
   constexpr unsigned W = 2 * L + 1;  // the products' 2L limbs and a limb for the carries
-  static_assert(sizeof(limb) * 8 == 64 && sizeof(boost::multiprecision::limb_type) == sizeof(limb),
-                "geomint::linalg::exact_dot: 64-bit limbs expected");
+  static_assert(sizeof(*a[0].backend().bits().limbs()) == sizeof(limb), "geomint::linalg::exact_dot: 64-bit limbs expected");
   // The exponent of each product (the sum of the factors' exponents), and the largest.
   long long top = 0;
   bool any = false;
