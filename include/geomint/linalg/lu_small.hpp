@@ -23,13 +23,10 @@ enum class pivoting { complete, partial };
 }  // namespace linalg
 
 namespace linalg::detail {
-/// LU with complete pivoting (P A Q = L U; with pivoting::partial, Q = I) in place on a
-/// column-major n x n array: false if the largest remaining pivot is <= n eps max|A| (singular
-/// to working precision) or A is not finite. `Size` is int (the size known at run time: one
-/// instantiation per scalar serves every size) or std::integral_constant<int, N> (loops of
-/// known length, unrolled where small): see lu_extent.
-template <class T, class Size>
-bool lu_factor(T* a, Size size, int* row, int* col, pivoting search = pivoting::complete) {
+/// lu_factor for one pivot search, fixed at compile time (the complete search's loops stay
+/// those of the rows; see lu_factor).
+template <bool Partial, class T, class Size>
+bool lu_factor_with(T* a, Size size, int* row, int* col) {
   using std::abs;
   const int n = static_cast<int>(size);
   auto at = [&](int i, int j) -> T& { return a[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)]; };
@@ -43,7 +40,7 @@ bool lu_factor(T* a, Size size, int* row, int* col, pivoting search = pivoting::
   for (int k = 0; k < n; ++k) {
     int pr = k, pc = k;
     T best(-1);
-    const int last_column = search == pivoting::complete ? n : k + 1;
+    const int last_column = Partial ? k + 1 : n;
     for (int i = k; i < n; ++i)
       for (int j = k; j < last_column; ++j)
         if (abs(at(i, j)) > best) {
@@ -61,10 +58,9 @@ bool lu_factor(T* a, Size size, int* row, int* col, pivoting search = pivoting::
         for (int i = 0; i < n; ++i) std::swap(at(i, k), at(i, pc));
     }
     const T inv = T(1) / at(k, k);
-    if (search == pivoting::partial) {
-      // By columns (contiguous): the same products and differences as the rows below, in
-      // another order. (Complete pivoting keeps the rows: faster for the small compile-time
-      // sizes it serves.)
+    if constexpr (Partial) {
+      // By columns (contiguous, vectorised for the run-time sizes of lu_in_double): the same
+      // products and differences as the rows below, in another order.
       for (int i = k + 1; i < n; ++i) at(i, k) *= inv;
       for (int j = k + 1; j < n; ++j) {
         const T u = at(k, j);
@@ -73,16 +69,27 @@ bool lu_factor(T* a, Size size, int* row, int* col, pivoting search = pivoting::
         const T* multipliers = &at(0, k);
         for (int i = k + 1; i < n; ++i) column[i] -= multipliers[i] * u;
       }
-      continue;
-    }
-    for (int i = k + 1; i < n; ++i) {
-      const T f = at(i, k) * inv;
-      at(i, k) = f;
-      if (f == T(0)) continue;
-      for (int j = k + 1; j < n; ++j) at(i, j) -= f * at(k, j);
+    } else {
+      // By rows: faster for the small compile-time sizes complete pivoting serves.
+      for (int i = k + 1; i < n; ++i) {
+        const T f = at(i, k) * inv;
+        at(i, k) = f;
+        if (f == T(0)) continue;
+        for (int j = k + 1; j < n; ++j) at(i, j) -= f * at(k, j);
+      }
     }
   }
   return true;
+}
+
+/// LU with complete pivoting (P A Q = L U; with pivoting::partial, Q = I) in place on a
+/// column-major n x n array: false if the largest remaining pivot is <= n eps max|A| (singular
+/// to working precision) or A is not finite. `Size` is int (the size known at run time: one
+/// instantiation per scalar serves every size) or std::integral_constant<int, N> (loops of
+/// known length, unrolled where small): see lu_extent.
+template <class T, class Size>
+bool lu_factor(T* a, Size size, int* row, int* col, pivoting search = pivoting::complete) {
+  return search == pivoting::partial ? lu_factor_with<true>(a, size, row, col) : lu_factor_with<false>(a, size, row, col);
 }
 
 /// b <- A^{-1} b from lu_factor's factors. The multipliers were swapped with their rows, so all
@@ -130,7 +137,7 @@ class lu_small {
   /// False if A is singular to working precision or not finite.
   bool factor(const mat<T, N>& A) {
     lu_ = A;
-    return linalg::detail::lu_factor<T>(lu_.data(), linalg::detail::lu_size<T, N>(), row_.data(), col_.data());
+    return linalg::detail::lu_factor_with<false, T>(lu_.data(), linalg::detail::lu_size<T, N>(), row_.data(), col_.data());
   }
   /// x = A^{-1} b; false if x is not finite.
   bool solve(vec<T, N> b, vec<T, N>& x) const {
