@@ -1,15 +1,23 @@
 #pragma once
-/// Products of Boost cpp_bin_float numbers formed on their integer mantissas.
+/// Products, sums, dot products and conversions of Boost cpp_bin_float numbers formed on their
+/// integer mantissas.
 ///
-/// Boost's multiplication of two cpp_bin_float numbers goes through a double-width cpp_int
-/// temporary, a generic normalising shift and a generic rounding, and its result is copied
-/// limb by limb (memmove): about twice the time of the limb products themselves at 50 digits.
-/// `multiply_into` forms the product of the two mantissas exactly (L x L limbs) and rounds it
-/// once, to nearest with ties to even, into the destination: the same result bit for bit
-/// (tests/core/test_mantissa.cpp). Used in the implicit stages' inner loops and in the
-/// elementary functions; linalg/dot.hpp builds its exact dot products on the same access.
+/// Boost's arithmetic on cpp_bin_float goes through a double-width cpp_int temporary, a generic
+/// normalising shift and a generic rounding, and every copy of a number moves its limbs by
+/// memmove. Here the exact product or sum of the mantissas (a sum's smaller operand aligned in
+/// a frame with 64 guard bits and a sticky bit) is rounded once, to nearest with ties to even
+/// (IEEE 754's rule), straight into the destination: `multiply_into`, `add_into`,
+/// `subtract_into` (and the value-returning `fast_product`, `fast_sum`, `fast_difference`),
+/// `to_double`, and `exact_dot_into` (a dot product accumulated in one fixed-point integer, for
+/// linalg::dot, which states its bound). All but the dot product are correctly rounded
+/// (tests/core/test_mantissa.cpp: against the exact results in 1200 bits), so the same as
+/// Boost's operators except where those are not (docs/results/performance.md).
+/// For every other type, and for zeros, infinities, NaN and results beyond the exponent range,
+/// they are Boost's operators. Used in the implicit stages' inner loops and the elementary
+/// functions.
 
 #include <bit>
+#include <cstddef>
 #include <type_traits>
 
 namespace geomint {
@@ -220,6 +228,118 @@ bool exact_sum(const T& a, const T& b, bool subtract, T& out) {
   return true;
 }
 }  // namespace core::detail
+
+/// out = sum_k a[k] b[k stride], k < count, for exact_mantissa_arithmetic types: the products
+/// formed exactly on the mantissas, added in one fixed-point accumulator aligned to the largest
+/// (2L + 1 limbs; the products' bits below it are cut) and rounded once, to nearest with ties
+/// to even (linalg/dot.hpp states the accuracy). False (out untouched) for other types, a term
+/// that is not finite, or exponents near the ends of the type's range: the caller's loop then.
+template <class T>
+bool exact_dot_into(T& out, const T* a, const T* b, std::size_t count, std::size_t stride) {
+  if constexpr (!exact_mantissa_arithmetic_v<T>) {
+    return false;
+  } else {
+    using traits = exact_mantissa_arithmetic<T>;
+    using backend = typename traits::backend;
+    using limb = unsigned long long;
+    __extension__ using wide = unsigned __int128;  // (a GCC and Clang extension)
+    constexpr unsigned L = traits::limbs;
+    constexpr unsigned W = 2 * L + 1;  // the products' 2L limbs and a limb for the carries
+    static_assert(sizeof(*a[0].backend().bits().limbs()) == sizeof(limb), "geomint::exact_dot_into: 64-bit limbs expected");
+    // The exponent of each product (the sum of the factors' exponents), and the largest.
+    long long top = 0;
+    bool any = false;
+    for (std::size_t k = 0; k < count; ++k) {
+      const backend& x = a[k].backend();
+      const backend& y = b[k * stride].backend();
+      if (x.exponent() == backend::exponent_zero || y.exponent() == backend::exponent_zero) continue;
+      if (x.exponent() > backend::max_exponent || y.exponent() > backend::max_exponent) return false;  // inf, NaN
+      const long long e = static_cast<long long>(x.exponent()) + y.exponent();
+      if (!any || e > top) top = e;
+      any = true;
+    }
+    if (!any) {
+      out = T(0);
+      return true;
+    }
+    // The result's exponent before rounding, which the rounding moves by at most the
+    // accumulator's 64 W bits: kept far inside int (and far outside any exponent a step meets).
+    const long long exponent = top - static_cast<long long>(traits::bits) + 1;
+    if (exponent > static_cast<long long>(backend::max_exponent) - 64LL * W ||
+        exponent < static_cast<long long>(backend::min_exponent) + 64LL * W)
+      return false;
+    // Positive and negative parts, each sum_k m_x m_y 2^-(top - e_k) in units of 2^(top - 2 bits + 2).
+    limb positive[W] = {}, negative[W] = {};
+    for (std::size_t k = 0; k < count; ++k) {
+      const backend& x = a[k].backend();
+      const backend& y = b[k * stride].backend();
+      if (x.exponent() == backend::exponent_zero || y.exponent() == backend::exponent_zero) continue;
+      const long long shift = top - (static_cast<long long>(x.exponent()) + y.exponent());
+      if (shift >= 64LL * 2 * L) continue;  // below the accumulator's last bit
+      const limb* mx = x.bits().limbs();
+      const limb* my = y.bits().limbs();
+      limb product[2 * L] = {};
+      for (unsigned i = 0; i < L; ++i) {
+        limb carry = 0;
+        for (unsigned j = 0; j < L; ++j) {
+          const wide t = static_cast<wide>(mx[i]) * my[j] + product[i + j] + carry;
+          product[i + j] = static_cast<limb>(t);
+          carry = static_cast<limb>(t >> 64);
+        }
+        product[i + L] = carry;
+      }
+      // product >> shift, added to its part.
+      const auto limb_shift = static_cast<unsigned>(shift / 64);
+      const auto bit_shift = static_cast<unsigned>(shift % 64);
+      limb* part = (x.sign() != y.sign()) ? negative : positive;
+      limb carry = 0;
+      for (unsigned i = 0; i + limb_shift < 2 * L; ++i) {
+        limb v = product[i + limb_shift] >> bit_shift;
+        if (bit_shift != 0 && i + limb_shift + 1 < 2 * L) v |= product[i + limb_shift + 1] << (64 - bit_shift);
+        const wide t = static_cast<wide>(part[i]) + v + carry;
+        part[i] = static_cast<limb>(t);
+        carry = static_cast<limb>(t >> 64);
+      }
+      for (unsigned i = 2 * L - limb_shift; i < W && carry != 0; ++i) {
+        const wide t = static_cast<wide>(part[i]) + carry;
+        part[i] = static_cast<limb>(t);
+        carry = static_cast<limb>(t >> 64);
+      }
+    }
+    // |positive - negative| and its sign.
+    bool negative_result = false;
+    for (unsigned i = W; i-- > 0;) {
+      if (positive[i] != negative[i]) {
+        negative_result = negative[i] > positive[i];
+        break;
+      }
+    }
+    const limb* big = negative_result ? negative : positive;
+    const limb* small = negative_result ? positive : negative;
+    limb sum[W];
+    limb borrow = 0;
+    for (unsigned i = 0; i < W; ++i) {
+      const wide t = static_cast<wide>(big[i]) - small[i] - borrow;
+      sum[i] = static_cast<limb>(t);
+      borrow = static_cast<limb>(t >> 64) != 0 ? 1 : 0;
+    }
+    int msb = -1;
+    for (unsigned i = W; i-- > 0;)
+      if (sum[i] != 0) {
+        msb = static_cast<int>(64 * i) + 63 - __builtin_clzll(sum[i]);
+        break;
+      }
+    if (msb < 0) {
+      out = T(0);
+      return true;
+    }
+    limb mantissa[L];
+    const long long final_exponent = exponent + core::detail::round_to_mantissa<traits>(sum, msb, false, mantissa);
+    if (final_exponent > backend::max_exponent || final_exponent < backend::min_exponent) return false;
+    core::detail::store(out, negative_result, final_exponent, mantissa);
+    return true;
+  }
+}
 
 /// x rounded to the nearest double, ties to even, as static_cast<double>(x) rounds: for
 /// exact_mantissa_arithmetic types from the mantissa's top bits where the result is a normal

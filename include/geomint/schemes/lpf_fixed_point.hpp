@@ -465,7 +465,7 @@ class lpf_fixed_point_engine {
   V inverse_mass(const V& x) const { return unit_mass_ ? x : V(minv_ * x); }
 
   /// z_i = sum_j mu_ij F_j for every stage (built-in types), by columns: each F_j added to all
-  /// stages at once (contiguous, vectorised), each z_i still summed over j in order as mu_row.
+  /// stages at once (contiguous, vectorised), each z_i summed over j in order.
   std::array<V, S> jacobi_combination(const std::array<V, S>& F) const {
     std::array<V, S> z;
     for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) z[I] = V::Zero();
@@ -475,17 +475,11 @@ class lpf_fixed_point_engine {
     return z;
   }
 
-  /// sum_j mu_ij F_j.
+  /// sum_j mu_ij F_j (multiprecision: the Gauss-Seidel sweeps and the odd middle stage).
   V mu_row(std::size_t I, const std::array<V, S>& F) const {
-    if constexpr (!std::is_floating_point_v<T>) {
-      V z;
-      for (int r = 0; r < n; ++r) z[r] = linalg::dot(k_.mu[I].data(), &F[0][r], S, n);
-      return z;
-    } else {
-      V z = V::Zero();
-      for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) z += k_.mu[I][J] * F[J];
-      return z;
-    }
+    V z;
+    for (int r = 0; r < n; ++r) z[r] = linalg::dot(k_.mu[I].data(), &F[0][r], S, n);
+    return z;
   }
 
   /// z_i = sum_j mu_ij F_j for every stage, by the mirror symmetry mu_i'j' = mu_ij + c_j - c_i
