@@ -97,6 +97,22 @@ void store(T& out, bool negative, long long exponent, const unsigned long long (
   result.sign() = negative;
 }
 
+/// The exact 2L-limb product of two L-limb mantissas (schoolbook).
+template <unsigned L>
+void multiply_mantissas(const unsigned long long* x, const unsigned long long* y, unsigned long long (&product)[2 * L]) {
+  __extension__ using wide = unsigned __int128;  // (a GCC and Clang extension)
+  for (unsigned i = 0; i < 2 * L; ++i) product[i] = 0;
+  for (unsigned i = 0; i < L; ++i) {
+    unsigned long long carry = 0;
+    for (unsigned j = 0; j < L; ++j) {
+      const wide t = static_cast<wide>(x[i]) * y[j] + product[i + j] + carry;
+      product[i + j] = static_cast<unsigned long long>(t);
+      carry = static_cast<unsigned long long>(t >> 64);
+    }
+    product[i + L] = carry;
+  }
+}
+
 /// out = a b rounded to nearest, ties to even, from the exact product of the mantissas (out may
 /// alias a or b); false (out untouched) for a zero, infinite or NaN factor or a result outside the exponent range,
 /// which the caller leaves to Boost.
@@ -105,7 +121,6 @@ bool exact_product(const T& a, const T& b, T& out) {
   using traits = exact_mantissa_arithmetic<T>;
   using backend = typename traits::backend;
   using limb = unsigned long long;
-  __extension__ using wide = unsigned __int128;  // (a GCC and Clang extension)
   constexpr unsigned L = traits::limbs;
   constexpr int bits = static_cast<int>(traits::bits);
   static_assert(sizeof(*a.backend().bits().limbs()) == sizeof(limb), "geomint::exact_product: 64-bit limbs expected");
@@ -114,18 +129,8 @@ bool exact_product(const T& a, const T& b, T& out) {
   if (x.exponent() > backend::max_exponent || y.exponent() > backend::max_exponent ||
       x.exponent() == backend::exponent_zero || y.exponent() == backend::exponent_zero)
     return false;
-  const limb* mx = x.bits().limbs();
-  const limb* my = y.bits().limbs();
-  limb product[2 * L] = {};
-  for (unsigned i = 0; i < L; ++i) {
-    limb carry = 0;
-    for (unsigned j = 0; j < L; ++j) {
-      const wide t = static_cast<wide>(mx[i]) * my[j] + product[i + j] + carry;
-      product[i + j] = static_cast<limb>(t);
-      carry = static_cast<limb>(t >> 64);
-    }
-    product[i + L] = carry;
-  }
+  limb product[2 * L];
+  multiply_mantissas<L>(x.bits().limbs(), y.bits().limbs(), product);
   // Both mantissas lie in [2^(p-1), 2^p): the product's leading one is at bit 2p - 1 or 2p - 2,
   // and its value is product 2^(e_x + e_y - 2 (p - 1)).
   constexpr int top = 2 * bits - 1;
@@ -276,18 +281,8 @@ bool exact_dot_into(T& out, const T* a, const T* b, std::size_t count, std::size
       if (x.exponent() == backend::exponent_zero || y.exponent() == backend::exponent_zero) continue;
       const long long shift = top - (static_cast<long long>(x.exponent()) + y.exponent());
       if (shift >= 64LL * 2 * L) continue;  // below the accumulator's last bit
-      const limb* mx = x.bits().limbs();
-      const limb* my = y.bits().limbs();
-      limb product[2 * L] = {};
-      for (unsigned i = 0; i < L; ++i) {
-        limb carry = 0;
-        for (unsigned j = 0; j < L; ++j) {
-          const wide t = static_cast<wide>(mx[i]) * my[j] + product[i + j] + carry;
-          product[i + j] = static_cast<limb>(t);
-          carry = static_cast<limb>(t >> 64);
-        }
-        product[i + L] = carry;
-      }
+      limb product[2 * L];
+      core::detail::multiply_mantissas<L>(x.bits().limbs(), y.bits().limbs(), product);
       // product >> shift, added to its part.
       const auto limb_shift = static_cast<unsigned>(shift / 64);
       const auto bit_shift = static_cast<unsigned>(shift % 64);
