@@ -33,7 +33,9 @@ T dot_in_order(const T* a, const T* b, std::size_t count, std::size_t stride) {
 template <class T>
 T dot(const T* a, const T* b, std::size_t count, std::size_t stride = 1) {
   T result;  // (one named result on every path: returned without a copy)
-  if (exact_dot_into(result, a, b, count, stride)) return result;
+  if constexpr (exact_mantissa_arithmetic_v<T>) {
+    if (exact_dot_into(result, a, b, count, stride)) return result;
+  }
   result = detail::dot_in_order(a, b, count, stride);
   return result;
 }
