@@ -35,9 +35,10 @@ inline constexpr bool exact_mantissa_arithmetic_v = exact_mantissa_arithmetic<T>
 
 namespace core::detail {
 /// Rounds the W-limb integer `sum` (nonzero, leading one at bit msb; `sticky`: nonzero bits
-/// below it were cut) to p = Traits::bits bits, to nearest with ties to even, into `mantissa`
-/// (L limbs, leading one at bit p - 1). Returns how far the binary point moved: the rounded
-/// value is mantissa 2^(returned), so msb + 1 - p, plus one where rounding up carried out.
+/// below it were cut, which the callers have only where msb leaves bits below the mantissa) to
+/// p = Traits::bits bits, to nearest with ties to even, into `mantissa` (L limbs, leading one at
+/// bit p - 1). Returns how far the binary point moved: the rounded value is mantissa
+/// 2^(returned), so msb + 1 - p, plus one where rounding up carried out.
 template <class Traits, unsigned W>
 int round_to_mantissa(const unsigned long long (&sum)[W], int msb, bool sticky,
                       unsigned long long (&mantissa)[Traits::limbs]) {
@@ -88,7 +89,8 @@ int round_to_mantissa(const unsigned long long (&sum)[W], int msb, bool sticky,
 /// Writes sign, exponent and mantissa into out's backend (no temporary: a copy of a
 /// cpp_bin_float moves its limbs by memmove).
 template <class T>
-void store(T& out, bool negative, long long exponent, const unsigned long long (&mantissa)[exact_mantissa_arithmetic<T>::limbs]) {
+void store(T& out, bool negative, long long exponent,
+           const unsigned long long (&mantissa)[exact_mantissa_arithmetic<T>::limbs]) {
   constexpr unsigned L = exact_mantissa_arithmetic<T>::limbs;
   auto& result = out.backend();
   result.bits().resize(L, L);
@@ -99,7 +101,8 @@ void store(T& out, bool negative, long long exponent, const unsigned long long (
 
 /// The exact 2L-limb product of two L-limb mantissas (schoolbook).
 template <unsigned L>
-void multiply_mantissas(const unsigned long long* x, const unsigned long long* y, unsigned long long (&product)[2 * L]) {
+void multiply_mantissas(const unsigned long long* x, const unsigned long long* y,
+                        unsigned long long (&product)[2 * L]) {
   __extension__ using wide = unsigned __int128;  // (a GCC and Clang extension)
   for (unsigned i = 0; i < 2 * L; ++i) product[i] = 0;
   for (unsigned i = 0; i < L; ++i) {
@@ -114,8 +117,8 @@ void multiply_mantissas(const unsigned long long* x, const unsigned long long* y
 }
 
 /// out = a b rounded to nearest, ties to even, from the exact product of the mantissas (out may
-/// alias a or b); false (out untouched) for a zero, infinite or NaN factor or a result outside the exponent range,
-/// which the caller leaves to Boost.
+/// alias a or b); false (out untouched) for a zero, infinite or NaN factor or a result outside
+/// the exponent range, which the caller leaves to Boost.
 template <class T>
 bool exact_product(const T& a, const T& b, T& out) {
   using traits = exact_mantissa_arithmetic<T>;
@@ -156,7 +159,6 @@ bool exact_sum(const T& a, const T& b, bool subtract, T& out) {
   __extension__ using wide = unsigned __int128;
   constexpr unsigned L = traits::limbs;
   constexpr unsigned W = L + 2;
-  constexpr int bits = static_cast<int>(traits::bits);
   const backend& x = a.backend();
   const backend& y = b.backend();
   if (x.exponent() > backend::max_exponent || y.exponent() > backend::max_exponent ||
@@ -226,8 +228,10 @@ bool exact_sum(const T& a, const T& b, bool subtract, T& out) {
   if (msb < 0) return false;  // exact cancellation: Boost's signed zero
   limb mantissa[L];
   const int moved = round_to_mantissa<traits>(sum, msb, sticky, mantissa);
-  // The frame's unit is 2^(e_big - (bits - 1) - 64): the value is mantissa 2^(moved) units.
-  const long long exponent = static_cast<long long>(big.exponent()) - (bits - 1) - 64 + moved + (bits - 1);
+  // The frame's unit is 2^(e_big - (bits - 1) - 64) and the value mantissa 2^moved units: the
+  // result's exponent (of its leading bit, p - 1 places above the mantissa's unit) is then
+  // e_big - 64 + moved.
+  const long long exponent = static_cast<long long>(big.exponent()) - 64 + moved;
   if (exponent > backend::max_exponent || exponent < backend::min_exponent) return false;
   store(out, negative, exponent, mantissa);
   return true;
