@@ -3,7 +3,7 @@
 ///
 /// A fixed-step method runs `knob` steps of size T/knob. An adaptive method (Odeint's controlled
 /// runge_kutta_fehlberg78 and bulirsch_stoer) runs with absolute and relative tolerance
-/// 10^(-knob/2). The Taylor-series flow (analysis/reference_flow.hpp) picks its own order and
+/// 10^(-knob/4). The Taylor-series flow (analysis/reference_flow.hpp) picks its own order and
 /// steps for the scalar's precision and runs once. Every run returns the number of steps taken
 /// (or -1 on a failed step); `monitor`, if given, sees the state after every step.
 #include <algorithm>
@@ -42,15 +42,15 @@ struct method {
   std::string name;
   bool peer = false;
   knob_kind kind = knob_kind::steps;
-  long first = 1;  ///< first knob of the sweep (steps, or twice the tolerance exponent)
+  long first = 1;  ///< first knob of the sweep (steps, or four times the tolerance exponent)
   std::function<long(long knob, const T& t_end, arr<T, n>& q, arr<T, n>& p, const monitor_fn<T, n>* mon)> run;
 };
 
-/// 10^(-knob/2) computed in T.
+/// 10^(-knob/4) computed in T.
 template <class T>
 T tolerance_of(long knob) {
   using std::pow;
-  return T(pow(T(10), T(-knob) / T(2)));
+  return T(pow(T(10), T(-knob) / T(4)));
 }
 
 /// A geomint scheme; `compensated`: compensated summation of the q, p update

@@ -52,8 +52,8 @@ std::vector<method<T, P::n>> methods_16(bool compensated) {
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
       "odeint-symplectic_rkn_sb3a_m4_mclachlan", 4000));
   all.push_back(odeint_verlet<P, T>("odeint-velocity_verlet", 20000));
-  all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 8));
-  all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 8));
+  all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 16));
+  all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 16));
   all.push_back(composition_method<P, T>("sv-yoshida6-s7", analysis::symmetric_composition<T>::yoshida6(), 5000));
   all.push_back(composition_method<P, T>("sv-kahan-li8-s17", analysis::symmetric_composition<T>::kahan_li8(), 2000));
   all.push_back(composition_method<P, T>("sv-sofroniou-spaletta10-s35",
@@ -79,8 +79,8 @@ std::vector<method<T, P::n>> methods_50(bool compensated) {
   all.push_back(geomint_method<P, lpf_fixed_point<16>, T>("lpf-fixed-point-m16", 100, compensated));
   all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
       "odeint-symplectic_rkn_sb3a_m4_mclachlan", 10000));
-  all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 24));
-  all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 24));
+  all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 48));
+  all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 48));
   all.push_back(composition_method<P, T>("sv-yoshida6-s7", analysis::symmetric_composition<T>::yoshida6(), 4000));
   all.push_back(composition_method<P, T>("sv-kahan-li8-s17", analysis::symmetric_composition<T>::kahan_li8(), 1000));
   all.push_back(composition_method<P, T>("sv-sofroniou-spaletta10-s35",

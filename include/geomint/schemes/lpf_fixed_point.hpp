@@ -320,30 +320,104 @@ class lpf_fixed_point_engine {
   /// f(x) = -grad V(x): the system's potential_gradient if it supplies one, else AD on V.
   V force(const V& x) const { return lagrangian_derivatives<Sys, T>::lagrangian_q(sys_, x, V::Zero()); }
 
-  /// F <- tau b_i f(Q_i(F)) (Jacobi sweeps in built-in types, Gauss-Seidel in multiprecision),
-  /// or in multiprecision F <- F + (dG/dF)^{-1} (tau b f(Q(F)) - F) with dG/dF in double (in
-  /// `lu`, already factorised by presolve_in_double if `factorised`, else formed here by
-  /// stage_matrix), until the increments stop changing: exactly (a fixed point in T),
-  /// or, once below eps^(2/3) relative, when the change has grown twice in a row (the
-  /// round-off floor), or (opt.stop_on_rate) when the rate bounds the change left below eps. A
-  /// non-finite iterate, two growths in a row above that level, or the iteration budget
-  /// (sweep_budget) spent above `tolerance_ulps` eps is a failure.
-  step_status iterate(const V& q, const T& tau, const stage_terms& terms, std::array<V, S>& F,
-                      const newton_options<T>& opt, lu_in_double<S * n>& lu, bool factorised) const {
-    using std::abs;
-    const T eps = std::numeric_limits<T>::epsilon();
-    const T floor_level = epsilon_two_thirds<T>();
-    const int budget = sweep_budget(opt);
-    step_status st;
+  /// When the iteration stops (iterate, sweep_in_builtin), from the change of each iteration:
+  /// when the increments stop changing exactly (a fixed point in T), or, once below eps^(2/3)
+  /// relative, when the change has grown twice in a row (the round-off floor), or
+  /// (opt.stop_on_rate) when the contraction rate bounds the change left below eps. Two growths
+  /// in a row above that level, or the iteration budget (sweep_budget) spent above
+  /// `tolerance_ulps` eps, is a failure (st.reason).
+  struct stopping_rule {
+    const newton_options<T>& opt;
+    T eps_q;  ///< eps |q|, the scale's floor
+    int budget = sweep_budget(opt);
     T previous = std::numeric_limits<T>::infinity();
     int growth = 0;
-    // Multiprecision (opt.double_jacobian): simplified Newton on the stage equations with their
-    // matrix in double (stage_matrix); otherwise, or where double cannot hold the matrix, sweeps.
-    bool newton = false;
-    if constexpr (!std::is_floating_point_v<T>) {
-      if (factorised) {
-        newton = true;
-      } else if (opt.double_jacobian) {
+
+    /// True when iteration `it`, with this change and increment size, ends the iteration.
+    bool stops(const T& change, const T& size, int it, step_status& st) {
+      const T eps = std::numeric_limits<T>::epsilon();
+      if (change == T(0)) return true;
+      const T scale = size + eps_q;
+      // As newton_options::stop_on_rate (multiprecision by default): the contraction rate says
+      // the change left after this sweep, rho / (1 - rho) times this one, is below eps, so the
+      // sweep that would only confirm it is saved.
+      if (opt.stop_on_rate && it > 1 && change < previous && rate_bounds_error(T(change / previous), change, scale))
+        return true;
+      if (change >= previous) {
+        // Growing twice in a row: at the round-off floor the fixed point is reached; above it
+        // the map is no contraction (tau beyond the iteration's reach).
+        if (++growth >= 2) {
+          if (change > epsilon_two_thirds<T>() * scale) st.reason = step_failure::no_convergence;
+          return true;
+        }
+      } else {
+        growth = 0;
+      }
+      previous = change;
+      if (it < budget) return false;
+      if (change > T(opt.tolerance_ulps) * eps * scale) st.reason = step_failure::no_convergence;
+      return true;
+    }
+  };
+
+  /// Built-in floating types: Jacobi sweeps F <- tau b_i f(Q_i(F)), whose S force evaluations
+  /// are independent and overlap in the processor's pipeline (Gauss-Seidel's chain of dependent
+  /// evaluations was slower per step in double despite the fewer sweeps). Each sweep forms all
+  /// stage sums at once (jacobi_combination), evaluates the forces, then measures the change,
+  /// the size and the finiteness of the S n new increments in one pass over them.
+  step_status sweep_in_builtin(const V& q, const T& tau, const stage_terms& terms, std::array<V, S>& F,
+                               const newton_options<T>& opt) const {
+    static_assert(sizeof(std::array<V, S>) == sizeof(T) * S * n, "stage vectors are stored contiguously");
+    using std::abs;
+    stopping_rule rule{opt, T(std::numeric_limits<T>::epsilon() * q.template lpNorm<Eigen::Infinity>())};
+    step_status st;
+    T* f = F[0].data();
+    for (int it = 1; it <= rule.budget; ++it) {
+      st.iterations = it;
+      std::array<T, S * n> z, next;
+      jacobi_combination(f, z.data());
+      for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
+        const V g = force(stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(V::Map(&z[I * n]))), terms.exact_offsets));
+        for (int r = 0; r < n; ++r) next[I * n + r] = terms.hb[I] * g[r];
+      }
+      T change(0), size(0);
+      bool finite = true;
+      for (std::size_t k = 0; k < static_cast<std::size_t>(S * n); ++k) {
+        const T a = abs(next[k]), d = abs(T(next[k] - f[k]));
+        finite = finite && a <= std::numeric_limits<T>::max();
+        size = a > size ? a : size;
+        change = d > change ? d : change;
+        f[k] = next[k];
+      }
+      if (!finite) {
+        st.reason = step_failure::non_finite_iterate;
+        return st;
+      }
+      if (rule.stops(change, size, it, st)) return st;
+    }
+    st.reason = step_failure::no_convergence;
+    return st;
+  }
+
+  /// Multiprecision: Gauss-Seidel sweeps (each stage sees the stages already updated in this
+  /// sweep: fewer sweeps), or F <- F + (dG/dF)^{-1} (tau b f(Q(F)) - F) with dG/dF in double
+  /// (in `lu`, already factorised by presolve_in_double if `factorised`, else formed here by
+  /// stage_matrix), until stopping_rule stops it. A non-finite iterate is a failure. Built-in
+  /// types: sweep_in_builtin.
+  step_status iterate(const V& q, const T& tau, const stage_terms& terms, std::array<V, S>& F,
+                      const newton_options<T>& opt, lu_in_double<S * n>& lu, bool factorised) const {
+    if constexpr (std::is_floating_point_v<T>) {
+      (void)lu;
+      (void)factorised;
+      return sweep_in_builtin(q, tau, terms, F, opt);
+    } else {
+      using std::abs;
+      stopping_rule rule{opt, T(std::numeric_limits<T>::epsilon() * q.template lpNorm<Eigen::Infinity>())};
+      step_status st;
+      // Simplified Newton on the stage equations with their matrix in double (stage_matrix,
+      // opt.double_jacobian); otherwise, or where double cannot hold the matrix, sweeps.
+      bool newton = factorised;
+      if (!newton && opt.double_jacobian) {
         std::array<vec<double, n>, S> Q;
         for (int i = 0; i < S; ++i) {
           const auto I = static_cast<std::size_t>(i);
@@ -352,49 +426,32 @@ class lpf_fixed_point_engine {
         }
         newton = stage_matrix(Q, to_double(tau), terms, lu);
       }
-    }
-    for (int it = 1; it <= budget; ++it) {
-      st.iterations = it;
-      std::array<V, S> next, z;
-      // Newton's pass and the Jacobi sweeps see one F throughout: its combinations at once
-      // (mu_combination; jacobi_combination); the Gauss-Seidel sweeps update F stage by stage.
-      if constexpr (!std::is_floating_point_v<T>) {
+      for (int it = 1; it <= rule.budget; ++it) {
+        st.iterations = it;
+        std::array<V, S> next, z;
+        // Newton's pass sees one F throughout: its combinations at once (mu_combination); the
+        // Gauss-Seidel sweeps update F stage by stage.
         if (newton) z = mu_combination(F);
-      } else {
-        z = jacobi_combination(F);
-      }
-      T change(0), size(0);
-      for (int i = 0; i < S; ++i) {
-        const auto I = static_cast<std::size_t>(i);
-        V Q;
-        if constexpr (std::is_floating_point_v<T>) {
-          Q = stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(z[I])), terms.exact_offsets);
-        } else {
-          Q = newton ? plus(q, plus(terms.base[I], scaled(tau, inverse_mass(z[I]))))
-                     : stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
-        }
-        next[I] = scaled(terms.hb[I], force(Q));
-        if (!all_finite(next[I])) {
-          st.reason = step_failure::non_finite_iterate;
-          return st;
-        }
-        if (!newton) {  // (Newton measures its corrections below)
-          for (int r = 0; r < n; ++r) {
-            const T d = abs(next[I][r] - F[I][r]);
-            if (d > change) change = d;
-            const T a = abs(next[I][r]);
-            if (a > size) size = a;
+        T change(0), size(0);
+        for (int i = 0; i < S; ++i) {
+          const auto I = static_cast<std::size_t>(i);
+          const V Q = newton ? plus(q, plus(terms.base[I], scaled(tau, inverse_mass(z[I]))))
+                             : stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(mu_row(I, F))), terms.exact_offsets);
+          next[I] = scaled(terms.hb[I], force(Q));
+          if (!all_finite(next[I])) {
+            st.reason = step_failure::non_finite_iterate;
+            return st;
+          }
+          if (!newton) {  // (Newton measures its corrections below)
+            for (int r = 0; r < n; ++r) {
+              const T d = abs(next[I][r] - F[I][r]);
+              if (d > change) change = d;
+              const T a = abs(next[I][r]);
+              if (a > size) size = a;
+            }
+            F[I] = next[I];
           }
         }
-        // Multiprecision: Gauss-Seidel, each stage sees the stages already updated in this sweep
-        // (fewer sweeps). Built-in types: Jacobi, whose S force evaluations are independent and
-        // overlap in the processor's pipeline (Gauss-Seidel's chain of dependent evaluations was
-        // slower per step in double despite the fewer sweeps).
-        if constexpr (!std::is_floating_point_v<T>) {
-          if (!newton) F[I] = next[I];
-        }
-      }
-      if constexpr (!std::is_floating_point_v<T>) {
         // The Newton correction d = (dG/dF)^{-1} (h(F) - F), solved in double from the residual
         // in T: the fixed point stays T's, each correction gains about 15 digits.
         if (newton) {
@@ -402,7 +459,14 @@ class lpf_fixed_point_engine {
           for (int i = 0; i < S; ++i)
             r.template segment<n>(i * n) = minus(next[static_cast<std::size_t>(i)], F[static_cast<std::size_t>(i)]);
           if (!lu.solve(r, d)) {
-            newton = false;  // beyond double's range: sweeps from here
+            // Beyond double's range: this pass becomes a Jacobi sweep (F <- h(F), its change
+            // measured), Gauss-Seidel sweeps from here.
+            newton = false;
+            for (int i = 0; i < S; ++i)
+              for (int c = 0; c < n; ++c) {
+                if (abs(T(r[i * n + c])) > change) change = abs(T(r[i * n + c]));
+                if (abs(next[static_cast<std::size_t>(i)][c]) > size) size = abs(next[static_cast<std::size_t>(i)][c]);
+              }
           } else {
             change = T(0);
             size = T(0);
@@ -417,30 +481,12 @@ class lpf_fixed_point_engine {
             }
           }
         }
+        F = next;
+        if (rule.stops(change, size, it, st)) return st;
       }
-      F = next;
-      if (change == T(0)) return st;
-      const T scale = size + eps * q.template lpNorm<Eigen::Infinity>();
-      // As newton_options::stop_on_rate (multiprecision by default): the contraction rate says
-      // the change left after this sweep, rho / (1 - rho) times this one, is below eps, so the
-      // sweep that would only confirm it is saved.
-      if (opt.stop_on_rate && it > 1 && change < previous && rate_bounds_error(T(change / previous), change, scale))
-        return st;
-      if (change >= previous) {
-        // Growing twice in a row: at the round-off floor the fixed point is reached; above it
-        // the map is no contraction (tau beyond the iteration's reach).
-        if (++growth >= 2) {
-          if (change > floor_level * scale) st.reason = step_failure::no_convergence;
-          return st;
-        }
-      } else {
-        growth = 0;
-      }
-      previous = change;
-      if (it == budget && change <= T(opt.tolerance_ulps) * eps * scale) return st;
+      st.reason = step_failure::no_convergence;
+      return st;
     }
-    st.reason = step_failure::no_convergence;
-    return st;
   }
 
   /// a x, a + b and a - b, one rounding per component (multiply_into, add_into: for
@@ -464,15 +510,14 @@ class lpf_fixed_point_engine {
   /// M^{-1} x, skipped for a unit mass matrix (exact either way).
   V inverse_mass(const V& x) const { return unit_mass_ ? x : V(minv_ * x); }
 
-  /// z_i = sum_j mu_ij F_j for every stage (built-in types), by columns: each F_j added to all
-  /// stages at once (contiguous, vectorised), each z_i summed over j in order.
-  std::array<V, S> jacobi_combination(const std::array<V, S>& F) const {
-    std::array<V, S> z;
-    for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) z[I] = V::Zero();
+  /// z_i = sum_j mu_ij F_j for every stage (built-in types; f and z hold S stage vectors of n
+  /// values each), by columns: each F_j added to all stages at once (contiguous, vectorised),
+  /// each z_i summed over j in order.
+  void jacobi_combination(const T* f, T* z) const {
+    for (std::size_t k = 0; k < static_cast<std::size_t>(S * n); ++k) z[k] = T(0);
     for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J)
       for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I)
-        for (int r = 0; r < n; ++r) z[I][r] += mu_by_column_[J][I] * F[J][r];
-    return z;
+        for (std::size_t r = 0; r < static_cast<std::size_t>(n); ++r) z[I * n + r] += mu_by_column_[J][I] * f[J * n + r];
   }
 
   /// sum_j mu_ij F_j (multiprecision: the Gauss-Seidel sweeps and the odd middle stage).
