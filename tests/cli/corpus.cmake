@@ -115,3 +115,5 @@ geomint_cli_corpus(geomint-workprecision "--t-end is out of range" --t-end 1e400
 geomint_cli_corpus(geomint-workprecision "--t-end expects a finite number > 0" --t-end abc)
 geomint_cli_corpus(geomint-workprecision "--max-seconds must be a finite number > 0" --max-seconds -1)
 geomint_cli_corpus(geomint-workprecision "--digits must be one of 16, 50" --digits 100)
+geomint_cli_corpus(geomint-workprecision "--passes is out of range" --passes 0)
+geomint_cli_corpus(geomint-workprecision "--passes expects an integer in 1..10" --passes x)

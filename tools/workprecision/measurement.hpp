@@ -156,7 +156,7 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
     long knob = m.first;
     double prev_error = std::numeric_limits<double>::infinity();
     int worse = 0;
-    for (int k = 0; k < 80; ++k) {
+    for (int k = 0; k < 160; ++k) {  // 40 decades of tolerance, 40 doublings of steps
       const auto r = measure<P, T, R>(m, knob, t_end, ref);
       if (!r) {
         std::cerr << "geomint-workprecision: " << m.name << " failed at knob " << knob << " (skipped)\n";
