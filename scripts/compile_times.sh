@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Compile-time profile of one CMake preset: configures it into build/<preset>-times with a
-# compiler launcher that records the CPU time (user + system) of every compile and link, builds
-# the given targets (default: all) and prints the units by CPU time and the total. CPU time, not
+# compiler launcher that records the CPU time (user + system) and the peak memory of every compile
+# and link, builds the given targets (default: all) and prints the units by CPU time, the total
+# and the largest memory of one unit. CPU time, not
 # wall time, so that the figures hold on a loaded machine. Arguments -DNAME=VALUE are cache
 # settings on top of the preset's (e.g. -DGEOMINT_TEST_SUITE_OPTIONS=-O1).
 # Usage: bash scripts/compile_times.sh <preset> [-DNAME=VALUE...] [target...]
@@ -21,10 +22,10 @@ mkdir -p "$build"
 launcher="$PWD/$build/time_launcher.sh"
 cat > "$launcher" <<'LAUNCHER'
 #!/usr/bin/env bash
-# Runs a compile or link command under /usr/bin/time: "user system wall output" per line.
+# Runs a compile or link command under /usr/bin/time: "user system wall maxrss_kb output" per line.
 out=""; prev=""
 for arg in "$@"; do [ "$prev" = "-o" ] && out="$arg"; prev="$arg"; done
-exec /usr/bin/time -f "%U %S %e $out" -a -o "$GEOMINT_TIMES_LOG" "$@"
+exec /usr/bin/time -f "%U %S %e %M $out" -a -o "$GEOMINT_TIMES_LOG" "$@"
 LAUNCHER
 chmod +x "$launcher"
 rm -f "$log"
@@ -34,5 +35,6 @@ targets=()
 for t in "$@"; do targets+=(--target "$t"); done
 GEOMINT_TIMES_LOG="$log" cmake --build "$build" -j2 "${targets[@]}"
 echo "=== CPU seconds (user + system) per unit, largest first ($log) ==="
-awk '{printf "%8.1f  %s\n", $1 + $2, $4}' "$log" | sort -rn
-awk '{cpu += $1 + $2} END {printf "=== total: %.0f s of CPU time in %d compiles and links ===\n", cpu, NR}' "$log"
+awk '{printf "%8.1f  %s\n", $1 + $2, $5}' "$log" | sort -rn
+awk '{cpu += $1 + $2; if ($4 > rss) {rss = $4; unit = $5}} END {
+  printf "=== total: %.0f s of CPU time in %d compiles and links; largest memory %.1f GB (%s) ===\n", cpu, NR, rss / 1048576, unit}' "$log"
