@@ -15,14 +15,9 @@ using boost::multiprecision::cpp_bin_float_100;
 #ifdef GEOMINT_HAVE_MPFR
 using boost::multiprecision::mpfr_float_100;
 #endif
-#if defined(GEOMINT_SANITIZER_SCALAR_TYPES)
-/// The sanitizer build looks for memory errors and undefined behaviour in geomint's code, which
-/// is the same for every scalar: the type-generic suites run in double there (the tests written
-/// for a multiprecision type keep it). The gcc and clang presets run every type.
-using scalar_types = std::tuple<double>;
-#elif defined(GEOMINT_REDUCED_SCALAR_TYPES)
-/// The clang build: one built-in and one multiprecision type keep its build short. The gcc
-/// preset runs all types.
+#if defined(GEOMINT_REDUCED_SCALAR_TYPES)
+/// The clang build (with the sanitizers): one built-in and one multiprecision type keep its
+/// build short. The gcc preset runs all types.
 using scalar_types = std::tuple<double, cpp_bin_float_50>;
 #elif defined(GEOMINT_HAVE_MPFR)
 using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100, mpfr_float_100>;
@@ -30,11 +25,7 @@ using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_f
 using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100>;
 #endif
 /// The types that the integrator tests use (the slow ones are left to the core suites).
-#if defined(GEOMINT_SANITIZER_SCALAR_TYPES)
-using integrator_scalar_types = std::tuple<double>;
-#else
 using integrator_scalar_types = std::tuple<double, cpp_bin_float_50>;
-#endif
 
 /// A tolerance of `ulps` units of the scalar's epsilon; never passes through a double literal.
 template <class T>

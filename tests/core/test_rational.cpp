@@ -26,7 +26,7 @@ constexpr std::int64_t max64 = std::numeric_limits<std::int64_t>::max();
 constexpr std::int64_t min64 = std::numeric_limits<std::int64_t>::min();
 
 /// Operand pairs per run: 2^19 in optimised builds (about 10^6 operands, each combined by
-/// +, -, *, / and <=>), 2^15 in unoptimised builds (the clang and sanitize presets at -O0, where
+/// +, -, *, / and <=>), 2^15 in unoptimised builds (the clang preset at -O0, where
 /// Boost's cpp_rational alone takes about 33 s for 2^19 pairs; the gcc preset runs all 2^19).
 #ifdef __OPTIMIZE__
 constexpr long pairs = 1L << 19;

@@ -1,14 +1,13 @@
-/// The tools' stepper factory, instantiated for one built-in system (GEOMINT_STEPPER_SYSTEM, the
-/// qualified type, e.g. systems::pendulum; with GEOMINT_STEPPER_HIGH_M its degrees 9..16) or for
-/// all zoo systems (GEOMINT_STEPPER_ZOO), in the scalar of GEOMINT_STEPPER_DIGITS (see
-/// CMakeLists.txt).
+/// The tools' stepper factory, instantiated for the four built-in systems (with
+/// GEOMINT_STEPPER_HIGH_M their degrees 9..16) or for all zoo systems (GEOMINT_STEPPER_ZOO), in
+/// the scalar of GEOMINT_STEPPER_DIGITS (see CMakeLists.txt).
 #include <stdexcept>
 #include <string>
 
 #include "stepper.hpp"
 
-#if !(defined(GEOMINT_STEPPER_SYSTEM) || defined(GEOMINT_STEPPER_ZOO)) || !defined(GEOMINT_STEPPER_DIGITS)
-#error "define GEOMINT_STEPPER_SYSTEM (or GEOMINT_STEPPER_ZOO) and GEOMINT_STEPPER_DIGITS"
+#if !defined(GEOMINT_STEPPER_DIGITS)
+#error "define GEOMINT_STEPPER_DIGITS"
 #endif
 
 namespace geomint::tools {
@@ -62,10 +61,11 @@ std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec) {
 
 using scalar = scalar_for_digits<GEOMINT_STEPPER_DIGITS>;
 #if defined(GEOMINT_STEPPER_HIGH_M)
-template std::unique_ptr<any_stepper<scalar>> make_high_m_stepper<GEOMINT_STEPPER_SYSTEM, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_high_m_stepper<systems::harmonic, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_high_m_stepper<systems::pendulum, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_high_m_stepper<systems::kepler, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_high_m_stepper<systems::charged, scalar>(const scheme_spec&);
 #elif defined(GEOMINT_STEPPER_ZOO)
-// The zoo systems of free_system_types (stepper.hpp), in one unit: their restricted factories
-// are small, and one unit pays the headers' parse time (about 5 s) once instead of six times.
 template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::henon_heiles, scalar>(const scheme_spec&);
 template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::spring_pendulum, scalar>(const scheme_spec&);
 template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::double_pendulum, scalar>(const scheme_spec&);
@@ -73,7 +73,10 @@ template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::toda3, sc
 template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::outer_solar, scalar>(const scheme_spec&);
 template std::unique_ptr<any_stepper<scalar>> make_system_stepper<zoo::arenstorf, scalar>(const scheme_spec&);
 #else
-template std::unique_ptr<any_stepper<scalar>> make_system_stepper<GEOMINT_STEPPER_SYSTEM, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<systems::harmonic, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<systems::pendulum, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<systems::kepler, scalar>(const scheme_spec&);
+template std::unique_ptr<any_stepper<scalar>> make_system_stepper<systems::charged, scalar>(const scheme_spec&);
 #endif
 
 }  // namespace geomint::tools

@@ -1,5 +1,5 @@
-/// geomint-workprecision: the method list of one (problem, digits) pair; one translation unit
-/// each (GEOMINT_WP_PROBLEM, GEOMINT_WP_DIGITS) so that they build in parallel.
+/// geomint-workprecision: the method lists of both problems in the digits GEOMINT_WP_DIGITS; one
+/// translation unit per digits (CMakeLists.txt).
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 // Boost 1.74's explicit_error_generic_rk copy constructor reads members that its default
@@ -108,6 +108,7 @@ int run_regime(const settings& o) {
 #endif
 }
 
-template int run_regime<GEOMINT_WP_PROBLEM, GEOMINT_WP_DIGITS>(const settings&);
+template int run_regime<pendulum_problem, GEOMINT_WP_DIGITS>(const settings&);
+template int run_regime<kepler_problem, GEOMINT_WP_DIGITS>(const settings&);
 
 }  // namespace geomint::workprecision
