@@ -171,8 +171,8 @@ std::unique_ptr<any_stepper<T>> make_zoo_stepper(const scheme_spec& spec) {
 /// systems: m = 9..16 for lpf on Gauss-interior nodes with the Lagrange basis, for its
 /// fixed-point form (natural systems) and for galerkin, the high-order schemes of the
 /// work-precision study (lpf order 2(m - 1), galerkin order 2m), in 16 and 50 digits. One unit
-/// per (system, digits) compiles their 16 (natural systems: 24) engines (stepper_tu.cpp,
-/// GEOMINT_STEPPER_HIGH_M).
+/// per digits compiles their 16 (natural systems: 24) engines for the four built-in systems
+/// (stepper_tu.cpp, GEOMINT_STEPPER_HIGH_M).
 template <class T>
 struct high_m_scheme_set {
   static constexpr int min_m = stepper_max_m + 1;

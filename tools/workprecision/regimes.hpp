@@ -10,7 +10,7 @@ inline regime regime_16() { return {16, 1000, 1e-13, {{1e-10, 0.5}, {1e-12, 1.0 
 /// cpp_bin_float_50 over T = 100, errors 1e-15..1e-40; goal at 1e-30 (1/10).
 inline regime regime_50() { return {50, 100, 1e-40, {{1e-30, 0.1}}, {1e-20, 1e-35}}; }
 
-/// The sweeps of one (problem, digits) pair, defined in one translation unit each (regime.cpp).
+/// The sweeps of one (problem, digits) pair, defined in regime.cpp (one translation unit per digits).
 template <class Problem, int Digits>
 int run_regime(const settings&);
 
