@@ -33,7 +33,8 @@ static_assert(tree_counts_match());
 static_assert(make_nystrom_trees(3).trees[2].gamma == 3 && make_nystrom_trees(3).trees[2].sigma == 2);
 static_assert(make_nystrom_trees(3).trees[3].gamma == 6 && make_nystrom_trees(3).trees[3].sigma == 1);
 
-// The examples.
+// LPF on Gauss-interior nodes has order 2(m - 1); on Gauss-Lobatto nodes it is symmetric but not
+// symplectic: bbar_i = b_i (1 - c_i) holds, b_i (bbar_j - a_ij) = b_j (bbar_i - a_ji) fails.
 static_assert(tree_order(lpf_tableau<5, gauss_interior>()) == 8);
 static_assert(symmetry(lpf_tableau<4, gauss_lobatto>()).symmetric);
 static_assert(!symplecticity(lpf_tableau<4, gauss_lobatto>()).symplectic);
