@@ -50,6 +50,12 @@ TEMPLATE_TEST_CASE("reference flow: Kepler orbit equals Kepler's equation", "[an
   }
 }
 
+/// |a - b| <= 64 eps * scale * steps.
+template <class T>
+bool abs_diff_scaled(const T& a, const T& b, const T& scale, const T& steps) {
+  return geomint::test::abs_diff(a, b) <= geomint::test::eps_tol<T>(64) * scale * steps;
+}
+
 template <class Sys, class T>
 void check_first_coefficient(const vec<T, Sys::dof>& q, const vec<T, Sys::dof>& v) {
   std::vector<vec<T, Sys::dof>> qc, vc;
@@ -69,6 +75,36 @@ TEMPLATE_TEST_CASE("reference flow: closed-form fields equal the Lagrangians' ac
   v << T(1) / T(3), T(5) / T(4);
   check_first_coefficient<systems::kepler, T>(q, v);
   check_first_coefficient<systems::charged, T>(q, v);
+  vec<T, 18> qs, vs;
+  zoo::outer_solar::initial_data<T>(qs, vs);
+  check_first_coefficient<zoo::outer_solar, T>(qs, vs);
+}
+
+TEMPLATE_TEST_CASE("reference flow: the outer solar system keeps energy and both momenta", "[analysis][reference]",
+                   double, cpp_bin_float_50) {
+  using T = TestType;
+  using S = zoo::outer_solar;
+  // Independent source: exact mathematics. Energy, total linear and angular momentum are
+  // invariants of the N-body flow; a wrong coefficient of any order in the recurrences would
+  // change them at the size of that order's term in each Taylor step (steps of some 100 days).
+  vec<T, 18> q0, v0;
+  S::initial_data<T>(q0, v0);
+  const vec<T, 18> p0 = S::mass_matrix<T>() * v0;
+  analysis::reference_flow<S, T> flow(q0, p0);
+  const T E0 = S::energy_qp<T>(q0, p0);
+  const vec<T, 3> P0 = S::linear_momentum<T>(p0), L0 = S::angular_momentum<T>(q0, p0);
+  flow.advance_to(T(4000));  // about one orbit of Jupiter
+  const vec<T, 18> p = flow.p();
+  CHECK(flow.steps() >= 10);
+  // Relative to each invariant's own scale: |E| (the potential's terms are of its size), and
+  // for the momenta the largest |p_i| (times |q_i| for L), one rounding per step and term.
+  const T steps(flow.steps());
+  const T p_scale = p0.cwiseAbs().maxCoeff(), l_scale = p_scale * q0.cwiseAbs().maxCoeff();
+  using std::abs;
+  CHECK(abs_diff_scaled(S::energy_qp<T>(flow.q(), p), E0, T(abs(E0)), steps));
+  CHECK((S::linear_momentum<T>(p) - P0).cwiseAbs().maxCoeff() <= geomint::test::eps_tol<T>(64) * steps * p_scale);
+  CHECK((S::angular_momentum<T>(flow.q(), p) - L0).cwiseAbs().maxCoeff() <=
+        geomint::test::eps_tol<T>(64) * steps * l_scale);
 }
 
 TEST_CASE("reference flow: energy is conserved to working precision", "[analysis][reference]") {

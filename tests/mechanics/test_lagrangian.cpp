@@ -68,6 +68,23 @@ TEMPLATE_LIST_TEST_CASE("lagrangian: supplied potential gradients equal AD on th
     INFO("henon-heiles, q = " << q.transpose());
     CHECK(potential_gradient_defect<henon_heiles_with_gradient, T>(q) <= T(8));
   }
+  // The outer solar system's gradients are of size 1e-8 and smaller (G m_i m_j / r^2 in AU,
+  // days and solar masses), so each body's is compared relative to its own size: at the
+  // initial data and with the coordinates moved by up to 2k/7 AU.
+  vec<T, 18> qs, vs;
+  zoo::outer_solar::initial_data<T>(qs, vs);
+  for (int k = 0; k <= 2; ++k) {
+    vec<T, 18> q = qs;
+    for (int i = 0; i < 18; ++i) q[i] += T(k * (i % 5 - 2)) / T(7);
+    const vec<T, 18> ad = -lagrangian_derivatives<zoo::outer_solar, T>::ad_potential_force(q);
+    const vec<T, 18> supplied = zoo::outer_solar::potential_gradient<T>(q);
+    for (int b = 0; b < zoo::outer_solar::bodies; ++b) {  // per body: Pluto's force is 1e-7 of Jupiter's
+      INFO("outer solar, shift " << k << ", body " << b);
+      const T size = ad.template segment<3>(3 * b).cwiseAbs().maxCoeff();
+      CHECK(size > T(0));
+      CHECK((supplied - ad).template segment<3>(3 * b).cwiseAbs().maxCoeff() <= T(64) * std::numeric_limits<T>::epsilon() * size);
+    }
+  }
   // A wrong gradient is caught: off by |q| = 1/2, i.e. by 1/(2 eps) units.
   CHECK(potential_gradient_defect<wrong_gradient, T>(vec<T, 1>(T(1) / T(2))) >= T(1) / (T(4) * std::numeric_limits<T>::epsilon()));
 }

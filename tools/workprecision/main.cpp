@@ -1,7 +1,8 @@
 /// geomint-workprecision: work-precision of geomint's variational integrators against strong
 /// peers (Boost.Odeint's symplectic RKN steppers, controlled runge_kutta_fehlberg78 and
 /// bulirsch_stoer; symmetric compositions of Stormer-Verlet of order 6, 8 and 10; geomint's
-/// Taylor-series flow) on the pendulum and the Kepler problem, in double or in 50 digits.
+/// Taylor-series flow) on the pendulum, the Kepler problem and the outer solar system, in double
+/// or in 50 digits.
 ///
 /// Files: problems.hpp (initial data, energy, force, closed-form reference), methods.hpp (one
 /// interface over all methods), measurement.hpp (sweeps, timing, summary), regime.cpp (the
@@ -19,7 +20,7 @@
 namespace {
 
 const char* usage =
-    "usage: geomint-workprecision [--system pendulum|kepler] [--digits 16|50] [--csv]\n"
+    "usage: geomint-workprecision [--system pendulum|kepler|outer-solar] [--digits 16|50] [--csv]\n"
     "                             [--t-end T (> 0)] [--max-seconds S (> 0)] [--methods a,b,...]\n"
     "                             [--plain-summation] [--passes N (1..10)]\n"
     "Work-precision of geomint's variational integrators (LPF on Gauss interior nodes in its\n"
@@ -31,12 +32,18 @@ const char* usage =
     "Kahan-Li order 8, 17 stages; Sofroniou-Spaletta order 10, 35 stages) with coefficients\n"
     "refined to the scalar's precision; geomint's Taylor-series flow (one run).\n"
     "Pendulum: theta0 = 1, thetadot0 = 0. Kepler: e = 0.5, q0 = (0.5, 0), qdot0 = (0, sqrt 3).\n"
+    "Outer solar system: Sun, Jupiter, Saturn, Uranus, Neptune, Pluto from 5 September 1994\n"
+    "(Hairer, Lubich, Wanner, section I.2.4; days, AU, solar masses); its default T is 100 times\n"
+    "the regime's, in days; its geomint side is LPF's fixed-point form m = 6..16 and, in double,\n"
+    "Newton's lpf m = 4, 6 and galerkin m = 4 (18 dof); its reference is the Taylor-series flow\n"
+    "in the wider scalar.\n"
     "--digits 16: double, T = 1000 (default), errors down to 1e-13, --max-seconds default 1.\n"
     "--digits 50: cpp_bin_float_50, T = 100 (default), errors down to 1e-40, --max-seconds default 4.\n"
     "Fixed-step methods: tau = T/steps shrinks by 2^(1/4); adaptive ones: tolerance by 10^(1/4);\n"
     "a sweep stops below the error floor, when the error stops improving, or when one run takes\n"
     "more than S CPU seconds. The reference is the closed form in a wider scalar.\n"
-    "--csv prints method,tau,steps,cpu_seconds,final_error,max_energy_error (one row per run)\n"
+    "--csv prints method,tau,steps,cpu_seconds,final_error,max_energy_error (one row per run;\n"
+    "the final error is |(q, qdot) - (q, qdot)_ref| at T, the energy error absolute)\n"
     "followed by the summary as '#' lines; otherwise a table and the summary. The summary\n"
     "interpolates (log-log) each method's CPU time at the regime's target errors and compares the\n"
     "best geomint scheme with the best peer (goals: double 1/2 at 1e-10 and 1/3 at 1e-12;\n"
@@ -54,7 +61,7 @@ int main(int argc, char** argv) {
   geomint::cli::parser cl("geomint-workprecision", usage);
   cl.toggle("--csv", [&] { o.csv = true; })
       .toggle("--plain-summation", [&] { o.compensated = false; })
-      .value("--system", [&](const std::string& v) { o.system = geomint::cli::parse_choice("--system", v, {"pendulum", "kepler"}); })
+      .value("--system", [&](const std::string& v) { o.system = geomint::cli::parse_choice("--system", v, {"pendulum", "kepler", "outer-solar"}); })
       .value("--digits",
              [&](const std::string& v) { o.digits = geomint::cli::parse_choice("--digits", v, {"16", "50"}) == "16" ? 16 : 50; })
       .value("--t-end", [&](const std::string& v) { o.t_end = geomint::cli::parse_real("--t-end", v, geomint::cli::real_bound::positive); })
@@ -67,6 +74,8 @@ int main(int argc, char** argv) {
     using namespace geomint::workprecision;
     int rc = 0;
     if (o.system == "kepler") rc = o.digits == 16 ? run_regime<kepler_problem, 16>(o) : run_regime<kepler_problem, 50>(o);
+    else if (o.system == "outer-solar")
+      rc = o.digits == 16 ? run_regime<outer_solar_problem, 16>(o) : run_regime<outer_solar_problem, 50>(o);
     else rc = o.digits == 16 ? run_regime<pendulum_problem, 16>(o) : run_regime<pendulum_problem, 50>(o);
     return geomint::cli::finish_stdout("geomint-workprecision", rc);
   } catch (const std::invalid_argument& e) {

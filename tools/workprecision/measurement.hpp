@@ -140,7 +140,7 @@ inline std::optional<double> cpu_at(const std::vector<result>& pts, double targe
 
 template <class P, class T, class R>
 int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> all) {
-  const double t_end_d = o.t_end.value_or(g.t_end);
+  const double t_end_d = o.t_end.value_or(g.t_end * P::horizon);
   const double max_seconds = o.max_seconds.value_or(g.digits == 16 ? 1.0 : 4.0);
   const T t_end = T(static_cast<long>(t_end_d)) == T(t_end_d) ? T(static_cast<long>(t_end_d)) : T(t_end_d);
   const auto ref = P::template exact<R>(R(static_cast<long>(t_end_d)) == R(t_end_d) ? R(static_cast<long>(t_end_d)) : R(t_end_d));
@@ -189,7 +189,8 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
   if (o.csv) std::cout << "method,tau,steps,cpu_seconds,final_error,max_energy_error\n";
   else
     std::cout << "system " << P::name << ", T = " << t_end_d << ", " << scalar
-              << "; reference: closed form in a wider scalar; CPU time: the fastest of " << o.passes
+              << "; reference: " << P::reference
+              << " in a wider scalar; CPU time: the fastest of " << o.passes
               << " timing passes\n"
               << std::left << std::setw(36) << "method" << std::right << std::setw(12) << "tau" << std::setw(10)
               << "steps" << std::setw(12) << "cpu [s]" << std::setw(12) << "final err" << std::setw(12) << "max dE"
@@ -234,7 +235,7 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
     }
     std::cout << "\n";
   };
-  for (const auto& goal : g.goals) report(goal.error, goal.ratio);
+  for (const auto& goal : g.goals) report(goal.error, P::goals ? std::optional<double>(goal.ratio) : std::nullopt);
   for (double e : g.others) report(e, std::nullopt);
   return 0;
 }

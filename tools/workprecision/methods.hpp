@@ -61,38 +61,40 @@ template <class P, class Scheme, class T>
 method<T, P::n> geomint_method(std::string name, long first_steps, bool compensated, bool stop_on_rate = false) {
   constexpr int n = P::n;
   method<T, n> m{std::move(name), false, knob_kind::steps, first_steps, {}};
-  m.run = [compensated, stop_on_rate](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& p,
+  m.run = [compensated, stop_on_rate](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& v,
                                       const monitor_fn<T, n>* mon) -> long {
     using I = integrator<Scheme, typename P::sys, T>;
     I integ(typename P::sys{}, T(t_end / T(steps)));
     integ.set_compensated_summation(compensated);
     if (stop_on_rate) integ.options().stop_on_rate = true;
+    // The shared state is (q, v); the scheme's is (q, p = M v).
+    const arr<T, n> mass = masses<typename P::sys, T>();
     typename I::state s;
     for (int i = 0; i < n; ++i) {
       s.q[i] = q[std::size_t(i)];
-      s.p[i] = p[std::size_t(i)];
+      s.p[i] = mass[std::size_t(i)] * v[std::size_t(i)];
     }
+    auto to_shared = [&](arr<T, n>& qq, arr<T, n>& vv) {
+      for (int i = 0; i < n; ++i) {
+        qq[std::size_t(i)] = s.q[i];
+        vv[std::size_t(i)] = s.p[i] / mass[std::size_t(i)];
+      }
+    };
     for (long k = 0; k < steps; ++k) {
       if (!integ.try_step(s)) return -1;
       if (mon) {
-        arr<T, n> qq, pp;
-        for (int i = 0; i < n; ++i) {
-          qq[std::size_t(i)] = s.q[i];
-          pp[std::size_t(i)] = s.p[i];
-        }
-        (*mon)(qq, pp);
+        arr<T, n> qq, vv;
+        to_shared(qq, vv);
+        (*mon)(qq, vv);
       }
     }
-    for (int i = 0; i < n; ++i) {
-      q[std::size_t(i)] = s.q[i];
-      p[std::size_t(i)] = s.p[i];
-    }
+    to_shared(q, v);
     return steps;
   };
   return m;
 }
 
-/// Odeint's symplectic RKN steppers (unit mass: dq/dt = p, dp/dt = force(q)).
+/// Odeint's symplectic RKN steppers (dq/dt = v, dv/dt = force(q) = -M^{-1} grad V).
 template <class P, class Stepper, class T>
 method<T, P::n> odeint_rkn(std::string name, long first_steps) {
   constexpr int n = P::n;
@@ -235,32 +237,31 @@ template <class P, class T>
 method<T, P::n> taylor_method(std::string name) {
   constexpr int n = P::n;
   method<T, n> m{std::move(name), true, knob_kind::none, 0, {}};
-  m.run = [](long, const T& t_end, arr<T, n>& q, arr<T, n>& p, const monitor_fn<T, n>* mon) -> long {
+  m.run = [](long, const T& t_end, arr<T, n>& q, arr<T, n>& v, const monitor_fn<T, n>* mon) -> long {
+    const arr<T, n> mass = masses<typename P::sys, T>();
     vec<T, n> q0, p0;
     for (int i = 0; i < n; ++i) {
       q0[i] = q[std::size_t(i)];
-      p0[i] = p[std::size_t(i)];
+      p0[i] = mass[std::size_t(i)] * v[std::size_t(i)];
     }
     analysis::reference_flow<typename P::sys, T> flow(q0, p0);
+    auto to_shared = [&](arr<T, n>& qq, arr<T, n>& vv) {
+      for (int i = 0; i < n; ++i) {
+        qq[std::size_t(i)] = flow.q()[i];
+        vv[std::size_t(i)] = flow.qdot()[i];
+      }
+    };
     // Monitored: 1000 sample times (the flow's own steps are not exposed).
     const long samples = mon ? 1000 : 1;
     for (long k = 1; k <= samples; ++k) {
       flow.advance_to(k == samples ? t_end : T(t_end * T(k) / T(samples)));
       if (mon) {
-        const vec<T, n> pk = flow.p();
-        arr<T, n> qq, pp;
-        for (int i = 0; i < n; ++i) {
-          qq[std::size_t(i)] = flow.q()[i];
-          pp[std::size_t(i)] = pk[i];
-        }
-        (*mon)(qq, pp);
+        arr<T, n> qq, vv;
+        to_shared(qq, vv);
+        (*mon)(qq, vv);
       }
     }
-    const vec<T, n> pk = flow.p();
-    for (int i = 0; i < n; ++i) {
-      q[std::size_t(i)] = flow.q()[i];
-      p[std::size_t(i)] = pk[i];
-    }
+    to_shared(q, v);
     return flow.steps();
   };
   return m;

@@ -22,8 +22,61 @@ struct boost::numeric::odeint::detail::extract_value_type<boost::multiprecision:
 namespace geomint::workprecision {
 namespace {
 
-/// The methods and first knobs (chosen so that the first error is near 1e-4 in double over
-/// T = 1000 and near 1e-12 in 50 digits over T = 100).
+/// The peers of every problem. First knobs: the first error near 1e-4 in double over T = 1000
+/// and near 1e-12 in 50 digits over T = 100 on the pendulum and Kepler; `steps_scale` scales the
+/// first step counts of another problem (the tolerances start where they do).
+template <class P, class T, bool multiprecision>
+void add_peers(std::vector<method<T, P::n>>& all, double steps_scale = 1) {
+  using namespace geomint;
+  using rkn = odeint::symplectic_rkn_sb3a_mclachlan<arr<T, P::n>, arr<T, P::n>, T>;
+  using rkn_m4 = odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>;
+  using C = analysis::symmetric_composition<T>;
+  auto steps = [steps_scale](long base) { return std::max(1L, std::lround(double(base) * steps_scale)); };
+  if constexpr (!multiprecision) {
+    all.push_back(odeint_rkn<P, rkn, T>("odeint-symplectic_rkn_sb3a_mclachlan", steps(4000)));
+    all.push_back(odeint_rkn<P, rkn_m4, T>("odeint-symplectic_rkn_sb3a_m4_mclachlan", steps(4000)));
+    all.push_back(odeint_verlet<P, T>("odeint-velocity_verlet", steps(20000)));
+    all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 16));
+    all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 16));
+    all.push_back(composition_method<P, T>("sv-yoshida6-s7", C::yoshida6(), steps(5000)));
+    all.push_back(composition_method<P, T>("sv-kahan-li8-s17", C::kahan_li8(), steps(2000)));
+    all.push_back(composition_method<P, T>("sv-sofroniou-spaletta10-s35", C::sofroniou_spaletta10(), steps(1000)));
+  } else {
+    all.push_back(odeint_rkn<P, rkn_m4, T>("odeint-symplectic_rkn_sb3a_m4_mclachlan", steps(10000)));
+    all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 48));
+    all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 48));
+    all.push_back(composition_method<P, T>("sv-yoshida6-s7", C::yoshida6(), steps(4000)));
+    all.push_back(composition_method<P, T>("sv-kahan-li8-s17", C::kahan_li8(), steps(1000)));
+    all.push_back(composition_method<P, T>("sv-sofroniou-spaletta10-s35", C::sofroniou_spaletta10(), steps(400)));
+  }
+  all.push_back(taylor_method<P, T>("taylor-series"));
+}
+
+/// The outer solar system (18 dof): LPF's fixed-point form up to m = 16, and the Newton forms
+/// only while their (18 m)^2 Newton matrix stays within Eigen's fixed-size stack limit (double:
+/// lpf m = 4, 6 and galerkin m = 4; none in 50 digits, where the first one would be m = 2).
+template <class P, class T, bool multiprecision>
+std::vector<method<T, P::n>> methods_large(bool compensated) {
+  using namespace geomint;
+  std::vector<method<T, P::n>> all;
+  if constexpr (!multiprecision) {
+    all.push_back(geomint_method<P, galerkin_vi<4>, T>("galerkin-m4", 300, compensated));
+    all.push_back(geomint_method<P, lpf<4, gauss_interior>, T>("lpf-m4-gauss-interior", 500, compensated));
+    all.push_back(geomint_method<P, lpf<6, gauss_interior>, T>("lpf-m6-gauss-interior", 150, compensated));
+    all.push_back(geomint_method<P, lpf_fixed_point<6>, T>("lpf-fixed-point-m6", 120, compensated));
+    all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8", 80, compensated));
+    all.push_back(geomint_method<P, lpf_fixed_point<10>, T>("lpf-fixed-point-m10", 60, compensated));
+    all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12", 50, compensated));
+    all.push_back(geomint_method<P, lpf_fixed_point<16>, T>("lpf-fixed-point-m16", 40, compensated));
+  } else {
+    all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8", 20, compensated));
+    all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12", 10, compensated));
+    all.push_back(geomint_method<P, lpf_fixed_point<16>, T>("lpf-fixed-point-m16", 8, compensated));
+  }
+  add_peers<P, T, multiprecision>(all, multiprecision ? 0.05 : 0.1);
+  return all;
+}
+
 template <class P, class T>
 std::vector<method<T, P::n>> methods_16(bool compensated) {
   using namespace geomint;
@@ -47,18 +100,7 @@ std::vector<method<T, P::n>> methods_16(bool compensated) {
   all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8-stop-on-rate", 500, compensated, true));
   all.push_back(geomint_method<P, lpf_fixed_point<10>, T>("lpf-fixed-point-m10-stop-on-rate", 300, compensated, true));
   all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12-stop-on-rate", 300, compensated, true));
-  all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
-      "odeint-symplectic_rkn_sb3a_mclachlan", 4000));
-  all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
-      "odeint-symplectic_rkn_sb3a_m4_mclachlan", 4000));
-  all.push_back(odeint_verlet<P, T>("odeint-velocity_verlet", 20000));
-  all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 16));
-  all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 16));
-  all.push_back(composition_method<P, T>("sv-yoshida6-s7", analysis::symmetric_composition<T>::yoshida6(), 5000));
-  all.push_back(composition_method<P, T>("sv-kahan-li8-s17", analysis::symmetric_composition<T>::kahan_li8(), 2000));
-  all.push_back(composition_method<P, T>("sv-sofroniou-spaletta10-s35",
-                                         analysis::symmetric_composition<T>::sofroniou_spaletta10(), 1000));
-  all.push_back(taylor_method<P, T>("taylor-series"));
+  add_peers<P, T, false>(all);
   return all;
 }
 
@@ -77,15 +119,7 @@ std::vector<method<T, P::n>> methods_50(bool compensated) {
   all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8", 200, compensated));
   all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12", 100, compensated));
   all.push_back(geomint_method<P, lpf_fixed_point<16>, T>("lpf-fixed-point-m16", 100, compensated));
-  all.push_back(odeint_rkn<P, odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>, T>(
-      "odeint-symplectic_rkn_sb3a_m4_mclachlan", 10000));
-  all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 48));
-  all.push_back(odeint_bulirsch_stoer<P, T>("odeint-bulirsch_stoer", 48));
-  all.push_back(composition_method<P, T>("sv-yoshida6-s7", analysis::symmetric_composition<T>::yoshida6(), 4000));
-  all.push_back(composition_method<P, T>("sv-kahan-li8-s17", analysis::symmetric_composition<T>::kahan_li8(), 1000));
-  all.push_back(composition_method<P, T>("sv-sofroniou-spaletta10-s35",
-                                         analysis::symmetric_composition<T>::sofroniou_spaletta10(), 400));
-  all.push_back(taylor_method<P, T>("taylor-series"));
+  add_peers<P, T, true>(all);
   return all;
 }
 
@@ -99,16 +133,19 @@ int run_regime(const settings& o) {
             << " is not compiled into this build (configured with GEOMINT_RUN_MULTIPRECISION=OFF)\n";
   return 2;
 #else
-  if constexpr (Digits == 16) {
-    return run_sweeps<P, double, boost::multiprecision::cpp_bin_float_50>(o, regime_16(), methods_16<P, double>(o.compensated));
-  } else {
-    using mp = boost::multiprecision::cpp_bin_float_50;
-    return run_sweeps<P, mp, boost::multiprecision::cpp_bin_float_100>(o, regime_50(), methods_50<P, mp>(o.compensated));
-  }
+  constexpr bool multiprecision = Digits != 16;
+  using T = std::conditional_t<multiprecision, boost::multiprecision::cpp_bin_float_50, double>;
+  using R = std::conditional_t<multiprecision, boost::multiprecision::cpp_bin_float_100, boost::multiprecision::cpp_bin_float_50>;
+  std::vector<method<T, P::n>> all;
+  if constexpr (P::n > 8) all = methods_large<P, T, multiprecision>(o.compensated);
+  else if constexpr (multiprecision) all = methods_50<P, T>(o.compensated);
+  else all = methods_16<P, T>(o.compensated);
+  return run_sweeps<P, T, R>(o, multiprecision ? regime_50() : regime_16(), std::move(all));
 #endif
 }
 
 template int run_regime<pendulum_problem, GEOMINT_WP_DIGITS>(const settings&);
 template int run_regime<kepler_problem, GEOMINT_WP_DIGITS>(const settings&);
+template int run_regime<outer_solar_problem, GEOMINT_WP_DIGITS>(const settings&);
 
 }  // namespace geomint::workprecision

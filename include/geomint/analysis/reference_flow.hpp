@@ -1,6 +1,6 @@
 #pragma once
-/// Reference flows for the order studies: the exact flow of the built-in free systems by an
-/// adaptive Taylor series method in any scalar type.
+/// Reference flows for the order studies: the exact flow of the built-in free systems and of the
+/// outer solar system (mechanics/zoo.hpp) by an adaptive Taylor series method in any scalar type.
 ///
 /// Independence: the accelerations are written here in closed form (not through the Lagrangian
 /// and the automatic differentiation used by the integrators):
@@ -8,28 +8,33 @@
 /// - pendulum: a = -sin q;
 /// - kepler:   a = -q |q|^-3;
 /// - charged:  a = B(r) (v_y, -v_x) with B = 1 + r^2, the Lorentz force of B = curl A
-///   (systems.hpp: A = a(r) (-y, x), a = (1 + r^2/2)/2).
+///   (systems.hpp: A = a(r) (-y, x), a = (1 + r^2/2)/2);
+/// - outer solar: a_i = G sum_{j != i} m_j (q_j - q_i) |q_j - q_i|^-3 (Newton's gravitation).
 /// Taylor coefficients follow from the usual recurrences (Cauchy products; sin/cos pairs;
 /// u^alpha: u_0 k w_k = sum_{j=1..k} ((alpha + 1) j - k) u_j w_{k-j}); the order N is about
 /// -ln(eps)/2 and the step h = min_j (eps/|z_j|)^(1/j) / 2 over the last two coefficients
 /// (Jorba & Zou 2005), so every step is accurate to about eps of the scalar type.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
 
 #include "geomint/mechanics/lagrangian.hpp"
 #include "geomint/mechanics/systems.hpp"
+#include "geomint/mechanics/zoo.hpp"
 
 namespace geomint::analysis {
 
 template <class Sys>
 inline constexpr bool has_reference_flow =
     std::is_same_v<Sys, systems::harmonic> || std::is_same_v<Sys, systems::pendulum> ||
-    std::is_same_v<Sys, systems::kepler> || std::is_same_v<Sys, systems::charged>;
+    std::is_same_v<Sys, systems::kepler> || std::is_same_v<Sys, systems::charged> ||
+    std::is_same_v<Sys, zoo::outer_solar>;
 
 namespace detail {
 
@@ -40,6 +45,60 @@ T cauchy(const std::vector<T>& a, const std::vector<T>& b, std::size_t k) {
   for (std::size_t j = 0; j <= k; ++j) out += a[j] * b[k - j];
   return out;
 }
+
+/// w_k of w = u^(-3/2) from u_0..u_k and w_0..w_{k-1} (Kepler's and Newton's r^-3 with u = r^2):
+/// u_0 k w_k = sum_{j=1..k} ((alpha + 1) j - k) u_j w_{k-j}, (alpha + 1) j - k = -(j + 2k)/2.
+template <class T>
+T inverse_cube_coefficient(const std::vector<T>& u, const std::vector<T>& w, std::size_t k) {
+  if (k == 0) {
+    using std::sqrt;
+    return T(1) / (u[0] * sqrt(u[0]));
+  }
+  T sum(0);
+  for (std::size_t j = 1; j <= k; ++j) sum -= T(static_cast<long>(j + 2 * k)) * u[j] * w[k - j];
+  return sum / (T(2) * T(static_cast<long>(k)) * u[0]);
+}
+
+/// The order-k coefficient of the outer solar system's accelerations, from the position
+/// coefficients q_0..q_k; `pairs` keeps each pair's series of q_j - q_i, |q_j - q_i|^2 and
+/// |q_j - q_i|^-3 (one Cauchy product per component and pair).
+template <class T>
+struct n_body_series {
+  static constexpr int bodies = zoo::outer_solar::bodies;
+  struct pair {
+    int i, j;
+    std::array<std::vector<T>, 3> d;
+    std::vector<T> r2, w;
+  };
+  std::vector<pair> pairs;
+  std::array<T, bodies> gm;
+
+  explicit n_body_series(std::size_t N) {
+    const T G = zoo::outer_solar::gravitational_constant<T>();
+    for (int b = 0; b < bodies; ++b) gm[std::size_t(b)] = G * zoo::outer_solar::mass<T>(b);
+    for (int i = 0; i < bodies; ++i)
+      for (int j = i + 1; j < bodies; ++j) {
+        pair pr{i, j, {}, std::vector<T>(N + 1), std::vector<T>(N + 1)};
+        for (auto& c : pr.d) c.assign(N + 1, T(0));
+        pairs.push_back(std::move(pr));
+      }
+  }
+
+  vec<T, 3 * bodies> acceleration(const std::vector<vec<T, 3 * bodies>>& q, std::size_t k) {
+    vec<T, 3 * bodies> a = vec<T, 3 * bodies>::Zero();
+    for (pair& pr : pairs) {
+      for (int c = 0; c < 3; ++c) pr.d[std::size_t(c)][k] = q[k][3 * pr.j + c] - q[k][3 * pr.i + c];
+      pr.r2[k] = cauchy(pr.d[0], pr.d[0], k) + cauchy(pr.d[1], pr.d[1], k) + cauchy(pr.d[2], pr.d[2], k);
+      pr.w[k] = inverse_cube_coefficient(pr.r2, pr.w, k);
+      for (int c = 0; c < 3; ++c) {
+        const T f = cauchy(pr.d[std::size_t(c)], pr.w, k);
+        a[3 * pr.i + c] += gm[std::size_t(pr.j)] * f;
+        a[3 * pr.j + c] -= gm[std::size_t(pr.i)] * f;
+      }
+    }
+    return a;
+  }
+};
 
 /// Taylor coefficients q_0..q_N, v_0..v_N of the solution of qddot = a(q, qdot) through
 /// (q_0, v_0), for the system's closed-form acceleration.
@@ -55,9 +114,13 @@ void taylor_coefficients(const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0,
   v[0] = v0;
   // Auxiliary series: pendulum sin/cos q; kepler and charged r^2 = x^2 + y^2 and w = r^-3.
   std::vector<T> s(N + 1), c(N + 1), x(N + 1), y(N + 1), vx(N + 1), vy(N + 1), r2(N + 1), w(N + 1);
+  std::optional<n_body_series<T>> bodies;
+  if constexpr (std::is_same_v<Sys, zoo::outer_solar>) bodies.emplace(N);
   for (std::size_t k = 0; k < N; ++k) {
     V a;
-    if constexpr (std::is_same_v<Sys, systems::harmonic>) {
+    if constexpr (std::is_same_v<Sys, zoo::outer_solar>) {
+      a = bodies->acceleration(q, k);
+    } else if constexpr (std::is_same_v<Sys, systems::harmonic>) {
       a = -q[k];
     } else if constexpr (std::is_same_v<Sys, systems::pendulum>) {
       using std::cos;
@@ -82,15 +145,7 @@ void taylor_coefficients(const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0,
       vy[k] = v[k][1];
       r2[k] = cauchy(x, x, k) + cauchy(y, y, k);
       if constexpr (std::is_same_v<Sys, systems::kepler>) {
-        if (k == 0) {
-          using std::sqrt;
-          w[0] = T(1) / (r2[0] * sqrt(r2[0]));
-        } else {
-          // w = u^alpha with u = r^2, alpha = -3/2: (alpha + 1) j - k = -(j + 2k)/2.
-          T sum(0);
-          for (std::size_t j = 1; j <= k; ++j) sum -= T(static_cast<long>(j + 2 * k)) * r2[j] * w[k - j];
-          w[k] = sum / (T(2) * T(static_cast<long>(k)) * r2[0]);
-        }
+        w[k] = inverse_cube_coefficient(r2, w, k);
         a[0] = -cauchy(x, w, k);
         a[1] = -cauchy(y, w, k);
       } else {

@@ -268,10 +268,32 @@ struct lagrangian_derivatives {
   /// (half of Eigen's fixed-size stack limit) the Hessian is built column by column instead.
   static constexpr std::size_t full_hessian_bytes = sizeof(dual<dual<T, n>, n>) * static_cast<std::size_t>(n);
 
-  /// First and second derivatives: two nested levels of AD.
+  /// Whether the Hessian of a natural system comes from one level of AD on its own gradient
+  /// (n + 1 components per operation) instead of two nested levels on V ((n + 1)^2): from 4
+  /// degrees of freedom on, where the nested duals cost more than the gradient's extra
+  /// operations (the outer solar system: 18).
+  static constexpr bool hessian_from_gradient =
+      natural_system<Sys> && n >= 4 && mechanics::detail::supplies_potential_gradient<Sys, dual<T, n>>;
+
+  /// First and second derivatives: two nested levels of AD (natural systems: see
+  /// hessian_from_gradient).
   static hessian_data<T, n> hessian(const Sys& sys, const V& x, const V& v) {
     hessian_data<T, n> h;
-    if constexpr (natural_system<Sys> && full_hessian_bytes > 64 * 1024) {
+    if constexpr (hessian_from_gradient) {
+      using D1 = dual<T, n>;
+      vec<D1, n> qd;
+      for (int i = 0; i < n; ++i) qd[i] = D1::variable(x[i], i);
+      const vec<D1, n> g = Sys::template potential_gradient<D1>(qd);
+      for (int i = 0; i < n; ++i) {
+        h.Lq[i] = -g[i].v;
+        for (int j = 0; j < n; ++j) h.Lqq(i, j) = -g[i].d[static_cast<std::size_t>(j)];
+      }
+      const Mt M = Sys::template mass_matrix<T>();
+      h.Lv = M * v;
+      h.Lqv.setZero();
+      h.Lvq.setZero();
+      h.Lvv = M;
+    } else if constexpr (natural_system<Sys> && full_hessian_bytes > 64 * 1024) {
       // Many degrees of freedom in a wide scalar (e.g. the outer solar system in 50 digits):
       // one directional second derivative per column, outer dual<., 1> along e_j over the
       // gradient duals: n evaluations of V with 2(n + 1) components each, instead of one with

@@ -12,12 +12,14 @@
 ///
 /// Constants are given as decimal strings and read in the working precision (no double literal).
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <string_view>
 #include <type_traits>
 
 #include "geomint/core/decimal.hpp"
+#include "geomint/core/elementary.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
 
 namespace geomint::zoo {
@@ -198,6 +200,35 @@ struct outer_solar : natural<outer_solar, 18> {
         out -= mass<S>(i) * mass<S>(j) / sqrt(S(dx * dx + dy * dy + dz * dz));
       }
     return S(gravitational_constant<S>() * out);
+  }
+  /// grad V: for each pair, G m_i m_j (q_i - q_j) |q_i - q_j|^-3 on body i and its opposite on j,
+  /// with 1/|q_i - q_j| from inverse_sqrt (fast in multiprecision). The products G m_i m_j are
+  /// formed once per scalar type (the masses are parsed from their decimal strings).
+  template <class S>
+  static vec<S, 18> potential_gradient(const vec<S, 18>& q) {
+    static const std::array<S, bodies * (bodies - 1) / 2> coupling = [] {
+      std::array<S, bodies * (bodies - 1) / 2> out;
+      std::size_t k = 0;
+      for (int i = 0; i < bodies; ++i)
+        for (int j = i + 1; j < bodies; ++j) out[k++] = S(gravitational_constant<S>() * mass<S>(i) * mass<S>(j));
+      return out;
+    }();
+    vec<S, 18> g = vec<S, 18>::Zero();
+    std::size_t k = 0;
+    for (int i = 0; i < bodies; ++i)
+      for (int j = i + 1; j < bodies; ++j, ++k) {
+        const S dx = q[3 * i] - q[3 * j], dy = q[3 * i + 1] - q[3 * j + 1], dz = q[3 * i + 2] - q[3 * j + 2];
+        const S y = inverse_sqrt(S(dx * dx + dy * dy + dz * dz));
+        const S s = coupling[k] * y * y * y;
+        const S fx = s * dx, fy = s * dy, fz = s * dz;
+        g[3 * i] += fx;
+        g[3 * i + 1] += fy;
+        g[3 * i + 2] += fz;
+        g[3 * j] -= fx;
+        g[3 * j + 1] -= fy;
+        g[3 * j + 2] -= fz;
+      }
+    return g;
   }
   template <class S>
   static mat<S, 18> mass_matrix() {

@@ -507,8 +507,13 @@ class lpf_fixed_point_engine {
     return out;
   }
 
-  /// M^{-1} x, skipped for a unit mass matrix (exact either way).
-  V inverse_mass(const V& x) const { return unit_mass_ ? x : V(minv_ * x); }
+  /// M^{-1} x: skipped for a unit mass matrix, one product per entry for a diagonal one (the
+  /// same roundings as the full product, whose other terms are exact zeros).
+  V inverse_mass(const V& x) const {
+    if (unit_mass_) return x;
+    if (diagonal_mass_) return V(minv_diagonal_.cwiseProduct(x));
+    return V(minv_ * x);
+  }
 
   /// z_i = sum_j mu_ij F_j for every stage (built-in types; f and z hold S stage vectors of n
   /// values each), by columns: each F_j added to all stages at once (contiguous, vectorised),
@@ -674,6 +679,8 @@ class lpf_fixed_point_engine {
   gauss_nystrom_coefficients<T, S> k_;
   mat<T, n> minv_;
   bool unit_mass_ = minv_ == mat<T, n>::Identity();
+  bool diagonal_mass_ = minv_ == mat<T, n>(minv_.diagonal().asDiagonal());
+  V minv_diagonal_ = minv_.diagonal();
   std::array<std::array<T, S>, S> extrapolate_{};
   /// mu transposed: mu_by_column_[j][i] = mu_ij (jacobi_combination).
   std::array<std::array<T, S>, S> mu_by_column_ = [this] {
