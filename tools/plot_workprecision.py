@@ -3,7 +3,7 @@
 Debian's matplotlib).
 
 usage: /usr/bin/python3 tools/plot_workprecision.py CSV [PNG]
-  CSV  output of `geomint-workprecision --system pendulum|kepler [--digits 16|50] --csv` (rows,
+  CSV  output of `geomint-workprecision --system pendulum|kepler|outer-solar [--digits 16|50] --csv` (rows,
        then '#' summary)
   PNG  default docs/figures/workprecision_<system>_<digits>.png, read from the summary line
 
@@ -38,16 +38,19 @@ def read(path):
         s["cpu"].append(float(r["cpu_seconds"]))
         s["err"].append(float(r["final_error"]))
         s["dE"].append(float(r["max_energy_error"]))
-    system, scalar = "unknown", "double"
+    system, scalar, reference = "unknown", "double", "closed form"
     for n in notes:
-        m = re.match(r"summary \((\w+), ([\w]+)", n)
+        m = re.match(r"summary \(([\w-]+), (\w+)", n)
         if m:
             system, scalar = m.group(1), m.group(2)
+            r = re.search(r"; reference: ([^)]+)\)", n)
+            if r:  # older files name none: the closed form
+                reference = r.group(1)
     floor = FLOOR.get(scalar, 1e-17)
     for s in series.values():
         for key in ("err", "dE"):
             s[key] = [v if v > 0 else floor for v in s[key]]
-    return series, notes, system, scalar
+    return series, notes, system, scalar, reference
 
 
 PEERS = ("odeint-", "sv-", "taylor-")
@@ -56,7 +59,7 @@ PEERS = ("odeint-", "sv-", "taylor-")
 def main(argv):
     if len(argv) not in (2, 3):
         sys.exit(__doc__)
-    series, notes, system, scalar = read(argv[1])
+    series, notes, system, scalar, reference = read(argv[1])
     digits = 16 if scalar == "double" else 50
     out = argv[2] if len(argv) == 3 else f"docs/figures/workprecision_{system}_{digits}.png"
     fig, axes = plt.subplots(1, 2, figsize=(13, 6), sharex=True)
@@ -69,13 +72,13 @@ def main(argv):
         axes[1].loglog(s["cpu"], s["dE"], label=name, **style)
     for target in ((1e-10, 1e-12) if digits == 16 else (1e-20, 1e-30)):
         axes[0].axhline(target, color="0.8", lw=0.8, zorder=0)
-    axes[0].set_ylabel("final error |(q, p) - (q, p)_ref| at T")
+    axes[0].set_ylabel("final error |(q, qdot) - (q, qdot)_ref| at T")
     axes[1].set_ylabel("max |H - H0| over [0, T]")
     for ax in axes:
         ax.set_xlabel("CPU seconds")
         ax.grid(True, which="major", alpha=0.3)
     axes[1].legend(fontsize=7, loc="upper right")
-    fig.suptitle(f"work-precision, {system} ({scalar}; reference: closed form in a wider scalar)")
+    fig.suptitle(f"work-precision, {system} ({scalar}; reference: {reference} in a wider scalar)")
     summary = [n for n in notes if n.startswith("  error")]
     if summary:
         fig.text(0.01, 0.005, "\n".join(s.strip() for s in summary), fontsize=7, va="bottom")

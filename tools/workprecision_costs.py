@@ -23,7 +23,7 @@ def read(path):
     data = [ln for ln in lines if ln and not ln.startswith("#")]
     label = path
     for ln in lines:
-        m = re.match(r"# summary \((\w+), ([\w]+)", ln)
+        m = re.match(r"# summary \(([\w-]+), (\w+)", ln)
         if m:
             label = f"{m.group(1)} {'double' if m.group(2) == 'double' else '50 digits'}"
     per_step = {}

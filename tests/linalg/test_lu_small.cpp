@@ -105,13 +105,9 @@ TEMPLATE_LIST_TEST_CASE("lu_small refuses singular and non-finite matrices", "[l
   CHECK_FALSE(invert_small<T, N>(A, inv));
 }
 
-TEST_CASE("lu_in_double: partial pivoting solves to a backward error of a few eps", "[linalg]") {
-  // The double factorisation with the pivot searched in its column only (linalg::pivoting::
-  // partial, for stage matrices near the identity): Wilkinson's backward-error bound for the
-  // residual (exact mathematics), for matrices dominated by the diagonal and for general ones.
-  // A row of zeros left after elimination (singular by construction) is refused as with
-  // complete pivoting.
-  constexpr int N = 12;
+/// The partial-pivoting checks below for one size (from 64 on, lu_in_double's blocked path).
+template <int N>
+void check_partial_pivoting() {
   for (unsigned seed = 1; seed <= 20; ++seed) {
     const mat<double, N> A = sample_matrix<double, N>(seed, seed % 2 == 0 ? 8 : 0);
     const vec<double, N> b = sample_vector<double, N>(seed + 100);
@@ -121,10 +117,33 @@ TEST_CASE("lu_in_double: partial pivoting solves to a backward error of a few ep
     REQUIRE(lu.factor_in_place(linalg::pivoting::partial));
     vec<double, N> x;
     REQUIRE(lu.solve(b, x));
-    const double residual = (A * x - b).lpNorm<Eigen::Infinity>();
-    CHECK(residual <= 4 * N * std::numeric_limits<double>::epsilon() * A.lpNorm<Eigen::Infinity>() *
-                          x.lpNorm<Eigen::Infinity>());
+    const double residual = (A * x - b).template lpNorm<Eigen::Infinity>();
+    CHECK(residual <= 4 * N * std::numeric_limits<double>::epsilon() * A.template lpNorm<Eigen::Infinity>() *
+                          x.template lpNorm<Eigen::Infinity>());
   }
+  // Singular by construction (the last row the sum of the first two, in binary fractions so
+  // that the sum is exact), and not finite: refused.
+  lu_in_double<N> singular, infinite;
+  const mat<double, N> A = sample_matrix<double, N>(7, 0);
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      const double a = std::ldexp(std::round(std::ldexp(A(i, j), 10)), -10);
+      singular.at(i, j) = i == N - 1 ? singular.at(0, j) + singular.at(1, j) : a;
+      infinite.at(i, j) = A(i, j);
+    }
+  CHECK_FALSE(singular.factor_in_place(linalg::pivoting::partial));
+  infinite.at(N / 2, N / 3) = std::numeric_limits<double>::infinity();
+  CHECK_FALSE(infinite.factor_in_place(linalg::pivoting::partial));
+}
+
+TEST_CASE("lu_in_double: partial pivoting solves to a backward error of a few eps", "[linalg]") {
+  // The double factorisation with the pivot searched in its column only (linalg::pivoting::
+  // partial, for stage matrices near the identity): Wilkinson's backward-error bound for the
+  // residual (exact mathematics), for matrices dominated by the diagonal and for general ones.
+  // A row of zeros left after elimination (singular by construction) is refused as with
+  // complete pivoting. N = 12: the unblocked loops; N = 96: Eigen's blocked PartialPivLU.
+  check_partial_pivoting<12>();
+  check_partial_pivoting<96>();
   lu_in_double<3> singular;
   const double rows[3][3] = {{1, 2, 3}, {4, 5, 6}, {5, 7, 9}};  // row 2 = row 0 + row 1
   for (int i = 0; i < 3; ++i)

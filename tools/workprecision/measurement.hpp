@@ -206,7 +206,7 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
                   << r.max_energy_error << "\n";
     }
   const char* pre = o.csv ? "# " : "";
-  std::cout << pre << "summary (" << P::name << ", " << scalar << ", T = " << t_end_d
+  std::cout << pre << "summary (" << P::name << ", " << scalar << ", T = " << t_end_d << "; reference: " << P::reference
             << "): CPU seconds at final error, log-log interpolation between measured points\n";
   auto report = [&](double target, std::optional<double> goal) {
     std::optional<double> best_g, best_p;
