@@ -79,7 +79,7 @@ std::optional<double> fastest_run(const method<T, P::n>& m, long knob, const T& 
   double best = std::numeric_limits<double>::infinity(), spent = 0;
   for (int rep = 0; rep < 20; ++rep) {
     q = P::template q0<T>();
-    p = P::template p0<T>();
+    p = P::template v0<T>();
     const double t0 = cpu_now();
     steps = m.run(knob, t_end, q, p, nullptr);
     const double dt = cpu_now() - t0;
@@ -106,7 +106,7 @@ std::optional<result> measure(const method<T, P::n>& m, long knob, const T& t_en
   r.steps = steps;
   r.tau = static_cast<double>(T(t_end / T(std::max(1L, steps))));
   r.final_error = phase_error<R, T, P::n>(q, p, ref);
-  arr<T, n> q2 = P::template q0<T>(), p2 = P::template p0<T>();
+  arr<T, n> q2 = P::template q0<T>(), p2 = P::template v0<T>();
   const T E0 = P::energy(q2, p2);
   T worst(0);
   const monitor_fn<T, n> monitor = [&](const arr<T, n>& qq, const arr<T, n>& pp) {

@@ -3,8 +3,9 @@
 /// reference in a wider scalar R: the closed form (include/geomint/analysis/closed_form_flows.hpp)
 /// where there is one, else the Taylor-series flow (analysis/reference_flow.hpp).
 ///
-/// Every problem has a constant diagonal mass matrix; the methods share the state (q, v) with the
-/// velocity v = qdot (the momentum p = M v for unit masses), and the final error is measured in it.
+/// Every problem has a constant diagonal mass matrix. The methods share the state (q, v), with the
+/// velocity v = qdot (geomint's schemes step p = M v, which is v for unit masses), and the final
+/// error is measured in it.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -65,7 +66,7 @@ struct pendulum_problem {
   template <class T>
   static arr<T, n> q0() { return initial_data<sys, T>()[0]; }
   template <class T>
-  static arr<T, n> p0() { return initial_data<sys, T>()[1]; }
+  static arr<T, n> v0() { return initial_data<sys, T>()[1]; }
   template <class T>
   static T energy(const arr<T, n>& q, const arr<T, n>& p) {
     using std::cos;
@@ -88,7 +89,7 @@ struct kepler_problem {
   template <class T>
   static arr<T, n> q0() { return initial_data<sys, T>()[0]; }
   template <class T>
-  static arr<T, n> p0() { return initial_data<sys, T>()[1]; }
+  static arr<T, n> v0() { return initial_data<sys, T>()[1]; }
   template <class T>
   static T energy(const arr<T, n>& q, const arr<T, n>& p) {
     using std::sqrt;
@@ -116,7 +117,7 @@ struct outer_solar_problem {
   template <class T>
   static arr<T, n> q0() { return initial_data<sys, T>()[0]; }
   template <class T>
-  static arr<T, n> p0() { return initial_data<sys, T>()[1]; }
+  static arr<T, n> v0() { return initial_data<sys, T>()[1]; }
   template <class T>
   static T energy(const arr<T, n>& q, const arr<T, n>& v) {
     static const arr<T, n> m = masses<sys, T>();
