@@ -55,48 +55,43 @@ void force(const arr<T, Sys::dof>& q, arr<T, Sys::dof>& f) {
   for (std::size_t i = 0; i < std::size_t(Sys::dof); ++i) f[i] = unit ? T(-g[int(i)]) : T(-g[int(i)] / m[i]);
 }
 
-/// Pendulum qddot = -sin q from theta0 = 1 at rest (systems::pendulum::initial_data).
-struct pendulum_problem {
-  using sys = systems::pendulum;
-  static constexpr int n = 1;
-  static constexpr const char* name = "pendulum";
-  static constexpr double horizon = 1;  ///< T is the regime's
+/// What every problem takes from its system: initial data, the peers' force and the defaults
+/// (T is the regime's, the goals apply, the reference is a closed form); a problem overrides them.
+template <class Sys>
+struct problem_of {
+  using sys = Sys;
+  static constexpr int n = Sys::dof;
+  static constexpr double horizon = 1;  ///< T in units of the regime's
   static constexpr bool goals = true;
   static constexpr const char* reference = "closed form";
   template <class T>
-  static arr<T, n> q0() { return initial_data<sys, T>()[0]; }
+  static arr<T, n> q0() { return initial_data<Sys, T>()[0]; }
   template <class T>
-  static arr<T, n> v0() { return initial_data<sys, T>()[1]; }
+  static arr<T, n> v0() { return initial_data<Sys, T>()[1]; }
+  template <class T>
+  static void force(const arr<T, n>& q, arr<T, n>& f) { workprecision::force<Sys>(q, f); }
+};
+
+/// Pendulum qddot = -sin q from theta0 = 1 at rest (systems::pendulum::initial_data).
+struct pendulum_problem : problem_of<systems::pendulum> {
+  static constexpr const char* name = "pendulum";
   template <class T>
   static T energy(const arr<T, n>& q, const arr<T, n>& p) {
     using std::cos;
     return p[0] * p[0] / T(2) + (T(1) - cos(q[0]));
   }
-  template <class T>
-  static void force(const arr<T, n>& q, arr<T, n>& f) { workprecision::force<sys>(q, f); }
   template <class R>
   static analysis::closed_form_state<R, n> exact(const R& t) { return analysis::pendulum_from_rest<R>(R(1), t); }
 };
 
 /// Kepler, a = 1, e = 1/2, from pericentre (systems::kepler::initial_data).
-struct kepler_problem {
-  using sys = systems::kepler;
-  static constexpr int n = 2;
+struct kepler_problem : problem_of<systems::kepler> {
   static constexpr const char* name = "kepler";
-  static constexpr double horizon = 1;
-  static constexpr bool goals = true;
-  static constexpr const char* reference = "closed form";
-  template <class T>
-  static arr<T, n> q0() { return initial_data<sys, T>()[0]; }
-  template <class T>
-  static arr<T, n> v0() { return initial_data<sys, T>()[1]; }
   template <class T>
   static T energy(const arr<T, n>& q, const arr<T, n>& p) {
     using std::sqrt;
     return (p[0] * p[0] + p[1] * p[1]) / T(2) - T(1) / sqrt(q[0] * q[0] + q[1] * q[1]);
   }
-  template <class T>
-  static void force(const arr<T, n>& q, arr<T, n>& f) { workprecision::force<sys>(q, f); }
   template <class R>
   static analysis::closed_form_state<R, n> exact(const R& t) { return analysis::kepler_from_pericentre<R>(R(1) / R(2), t); }
 };
@@ -107,17 +102,11 @@ struct kepler_problem {
 /// reference is the Taylor-series flow in the wider scalar R (its energy and momenta are checked
 /// in tests/analysis/test_reference_flow.cpp). The work-precision goals are set for the pendulum
 /// and Kepler; here the ratios are reported without one.
-struct outer_solar_problem {
-  using sys = zoo::outer_solar;
-  static constexpr int n = 18;
+struct outer_solar_problem : problem_of<zoo::outer_solar> {
   static constexpr const char* name = "outer-solar";
   static constexpr double horizon = 100;
   static constexpr bool goals = false;
   static constexpr const char* reference = "Taylor-series flow";
-  template <class T>
-  static arr<T, n> q0() { return initial_data<sys, T>()[0]; }
-  template <class T>
-  static arr<T, n> v0() { return initial_data<sys, T>()[1]; }
   template <class T>
   static T energy(const arr<T, n>& q, const arr<T, n>& v) {
     static const arr<T, n> m = masses<sys, T>();
@@ -128,8 +117,6 @@ struct outer_solar_problem {
     }
     return sys::energy_qp<T>(x, p);
   }
-  template <class T>
-  static void force(const arr<T, n>& q, arr<T, n>& f) { workprecision::force<sys>(q, f); }
   template <class R>
   static analysis::closed_form_state<R, n> exact(const R& t) {
     vec<R, n> q, v;

@@ -268,6 +268,15 @@ struct lagrangian_derivatives {
   /// (half of Eigen's fixed-size stack limit) the Hessian is built column by column instead.
   static constexpr std::size_t full_hessian_bytes = sizeof(dual<dual<T, n>, n>) * static_cast<std::size_t>(n);
 
+  /// The velocity terms of a natural system's derivatives: L_v = M v, L_vv = M, no mixed terms.
+  static void natural_velocity_terms(hessian_data<T, n>& h, const V& v) {
+    const Mt M = Sys::template mass_matrix<T>();
+    h.Lv = M * v;
+    h.Lqv.setZero();
+    h.Lvq.setZero();
+    h.Lvv = M;
+  }
+
   /// Whether the Hessian of a natural system comes from one level of AD on its own gradient
   /// (n + 1 components per operation) instead of two nested levels on V ((n + 1)^2): from 4
   /// degrees of freedom on, where the nested duals cost more than the gradient's extra
@@ -288,11 +297,7 @@ struct lagrangian_derivatives {
         h.Lq[i] = -g[i].v;
         for (int j = 0; j < n; ++j) h.Lqq(i, j) = -g[i].d[static_cast<std::size_t>(j)];
       }
-      const Mt M = Sys::template mass_matrix<T>();
-      h.Lv = M * v;
-      h.Lqv.setZero();
-      h.Lvq.setZero();
-      h.Lvv = M;
+      natural_velocity_terms(h, v);
     } else if constexpr (natural_system<Sys> && full_hessian_bytes > 64 * 1024) {
       // Many degrees of freedom in a wide scalar (e.g. the outer solar system in 50 digits):
       // one directional second derivative per column, outer dual<., 1> along e_j over the
@@ -312,27 +317,19 @@ struct lagrangian_derivatives {
           h.Lqq(i, j) = -pot.d[0].d[static_cast<std::size_t>(i)];
         }
       }
-      const Mt M = Sys::template mass_matrix<T>();
-      h.Lv = M * v;
-      h.Lqv.setZero();
-      h.Lvq.setZero();
-      h.Lvv = M;
+      natural_velocity_terms(h, v);
     } else if constexpr (natural_system<Sys>) {
       using D1 = dual<T, n>;
       using D2 = dual<D1, n>;
       vec<D2, n> qd;
       for (int i = 0; i < n; ++i) qd[i] = D2::variable(D1::variable(x[i], i), i);
       const D2 pot = Sys::template potential<D2>(qd);
-      const Mt M = Sys::template mass_matrix<T>();
-      h.Lv = M * v;
       for (int i = 0; i < n; ++i) {
         const D1& gi = pot.d[static_cast<std::size_t>(i)];
         h.Lq[i] = -gi.v;
         for (int j = 0; j < n; ++j) h.Lqq(i, j) = -gi.d[static_cast<std::size_t>(j)];
       }
-      h.Lqv.setZero();
-      h.Lvq.setZero();
-      h.Lvv = M;
+      natural_velocity_terms(h, v);
     } else {
       using D1 = dual<T, 2 * n>;
       using D2 = dual<D1, 2 * n>;
