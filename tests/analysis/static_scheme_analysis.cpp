@@ -110,6 +110,53 @@ static_assert(linear_stability(midpoint_tableau()).leading_coefficient == exact_
 static_assert(linear_stability(lpf_tableau<3, gauss_interior>()).order == 4 &&
               linear_stability(lpf_tableau<3, gauss_interior>()).determinant_is_one);
 
+// Stormer-Verlet: det M = 1, R = 2 - tau^2, interval of periodicity (0, 2) (HLW, Geometric
+// Numerical Integration, section I.5: stable for h omega < 2): z* = tau*^2 = 4 exactly.
+constexpr stability_interval verlet_interval = linear_stability_interval(linear_stability(trapezoidal_tableau()));
+static_assert(verlet_interval.kind == stability_kind::periodic && !verlet_interval.empty && !verlet_interval.unbounded);
+static_assert(verlet_interval.compare_squared(exact_number(4)) == 0);
+static_assert(verlet_interval.compare_squared(exact_number(rational(399, 100))) < 0);
+// The midpoint VI and Gauss collocation (Galerkin) are P-stable: R = (8 - 2z)/(4 + z) and the
+// diagonal Pade approximants of e^(i tau) have |R| <= 2 for every tau (HLW, section VI.4).
+static_assert(linear_stability_interval(linear_stability(midpoint_tableau())).unbounded);
+static_assert(linear_stability_interval(linear_stability(galerkin_tableau<2>())).unbounded);
+static_assert(linear_stability_interval(linear_stability(galerkin_tableau<3>())).unbounded);
+
+// Nystrom's classical explicit 3-stage order-4 method (E. J. Nystrom, Acta Soc. Sci. Fenn. 50
+// (1925); Hairer, Norsett, Wanner, Solving ODEs I, section II.14): c = (0, 1/2, 1), a21 = 1/8,
+// a32 = 1/2, bbar = (1/6, 1/3, 0), b = (1/6, 2/3, 1/6). Not symplectic (b1 (bbar2 - a12) = 1/18,
+// b2 (bbar1 - a21) = 1/36), so det M != 1. By hand, one step of y'' = -y on (q, tau p), z = tau^2:
+//   q1 = (1 - z/2 + z^2/24) q + (1 - z/6) tau p,
+//   tau p1 = -(z - z^2/6 + z^3/96) q + (1 - z/2 + z^2/24) tau p,
+// so t = tr M = 2 - z + z^2/12 and d = det M = 1 - z^3/288. Hence
+// - dissipation 1 - sqrt(d) = tau^6/576 + ...: order r = 5, constant 1/576;
+// - t / (2 sqrt d) = (1 - z/2 + z^2/24)(1 + z^3/576 + ...) = cos tau + (1/576 + 1/720) tau^6 + ...,
+//   so phi(tau) = tau^5/320 + ...: phase-lag order q = 4, constant 1/320;
+// - absolute stability: d <= 1 always; 1 + d - t = z (1 - z/12 - z^2/288) >= 0 up to
+//   z = 12 (sqrt 3 - 1) = 8.78; 1 + d + t = (1152 - 288 z + 24 z^2 - z^3)/288 >= 0 up to its
+//   only real root z* = 6.690..., so tau* = 2.586...; the trace alone (|t| <= 2 up to z = 12,
+//   tau = 3.46) is not the stability condition.
+constexpr exact_rkn_tableau nystrom4 = rational_rkn_tableau<3>(
+    {rational(0), rational(1, 2), rational(1)},
+    {{{rational(0), rational(0), rational(0)}, {rational(1, 8), rational(0), rational(0)}, {rational(0), rational(1, 2), rational(0)}}},
+    {rational(1, 6), rational(1, 3), rational(0)}, {rational(1, 6), rational(2, 3), rational(1, 6)});
+constexpr linear_stability_result nystrom4_stability = linear_stability(nystrom4);
+static_assert(tree_order(nystrom4) == 4 && !symplecticity(nystrom4).symplectic);
+static_assert(!nystrom4_stability.determinant_is_one);
+static_assert(nystrom4_stability.dissipation_order == 5 && nystrom4_stability.dissipation_constant == exact_number(rational(1, 576)));
+static_assert(nystrom4_stability.phase_lag_order == 4 && nystrom4_stability.phase_lag_constant == exact_number(rational(1, 320)));
+constexpr stability_interval nystrom4_interval = linear_stability_interval(nystrom4_stability);
+static_assert(nystrom4_interval.kind == stability_kind::absolute && !nystrom4_interval.empty && !nystrom4_interval.unbounded);
+constexpr bool bound_is(const analysis::detail::wide_polynomial& p, std::initializer_list<std::int64_t> coefficients) {
+  int k = 0;
+  for (std::int64_t c : coefficients)
+    if (!(p[k++] == analysis::detail::wide_integer(c))) return false;
+  return p.degree == k - 1;
+}
+static_assert(bound_is(nystrom4_interval.bound.polynomial, {1152, -288, 24, -1}));
+static_assert(nystrom4_interval.compare_squared(exact_number(rational(6689, 1000))) < 0);
+static_assert(nystrom4_interval.compare_squared(exact_number(rational(6691, 1000))) > 0);
+
 // Schemes of one's own: rational nodes, a node polynomial, an explicit tableau.
 // Nodes 1/6, 1/2, 5/6 (symmetric): quadrature order 4, not symplectic.
 constexpr exact_rkn_tableau own = collocation_tableau_from_nodes<3>({rational(1, 6), rational(1, 2), rational(5, 6)});

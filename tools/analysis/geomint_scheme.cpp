@@ -118,11 +118,13 @@ std::string polynomial_in_tau(const stability_polynomial& p, const char* var = "
   return out.empty() ? "0" : out;
 }
 
+/// tau* of the stability interval (0, tau*): inf, 0 when empty, or 30 digits.
 std::string stability_text(const linear_stability_result& r) {
-  const stability_interval iv = periodicity_interval(r);
+  const stability_interval iv = linear_stability_interval(r).refined(120);
+  if (iv.empty) return "0";
   if (iv.unbounded) return "inf";
   using std::sqrt;
-  return digits30(sqrt(to_decimal(iv.low)));
+  return digits30(sqrt(to_decimal(iv.low())));
 }
 
 struct options {

@@ -5,20 +5,35 @@
 ///   M = [[1 - z bbar X 1, 1 - z bbar X c], [-z b X 1, 1 - z b X c]],
 /// and every entry is a rational function of z computed exactly from bordered determinants:
 /// v^T adj(I + z A) u = -det [[I + z A, u], [v^T, 0]] (fraction-free Bareiss elimination over
-/// Q[z]). The two-step form of the scheme is x^{k+1} = tr(M) x^{k} - det(M) x^{k-1}; for the
-/// library's schemes det M = 1 and R(tau) = tr M is exact_scheme.hpp's R (eq. 16-19 for
-/// equispaced LPF). R = P(z)/Q(z) is reduced to lowest terms in Z[z] (gcd, content, Q(0) > 0)
-/// and expanded: R(tau) - 2 cos(tau) = c tau^(p+2) + O(tau^(p+4)).
+/// Q[z]). With D = det(I + z A): t = tr M = Tn / D, d = det M = Dn / D^2 (integer polynomials
+/// after one common scaling). The two-step form of the scheme is x^{k+1} = t x^k - d x^{k-1}.
+/// Whether d = 1 identically is decided exactly (Dn - D^2 is the zero polynomial): true for
+/// every symplectic method (and the library's schemes), false for e.g. the explicit
+/// non-symplectic RKN methods. R = t = P(z)/Q(z) is reduced to lowest terms in Z[z] (gcd,
+/// content, Q(0) > 0) and expanded: R(tau) - 2 cos(tau) = c tau^(p+2) + O(tau^(p+4)).
 ///
-/// Phase lag (dispersion; van der Houwen and Sommeijer, SIAM J. Numer. Anal. 24 (1987) 595-617):
-/// with det M = 1 the numerical frequency theta(tau) solves 2 cos theta = R(tau), and
-/// tau - theta = (c/2) tau^(p+1) + O(tau^(p+3)): phase-lag order p, constant c/2.
+/// Phase lag and dissipation (van der Houwen and Sommeijer, "Explicit Runge-Kutta(-Nystrom)
+/// methods with reduced phase errors for computing oscillating solutions", SIAM J. Numer. Anal.
+/// 24 (1987) 595-617), with H = tau:
+///   phi(H) = H - arccos(t / (2 sqrt(d))) = c_phi H^(q+1) + O(H^(q+3))   (phase lag, order q),
+///   d(H)   = 1 - sqrt(d)                 = c_d H^(r+1) + O(H^(r+3))     (dissipation, order r).
+/// Since t / (2 sqrt d) = cos H + e H^(q+2) + ... gives phi = e H^(q+1) + ..., c_phi = e; both
+/// series are computed exactly in z (power series of 1/D and d^(-1/2)). With d = 1 the method
+/// has no dissipation (dissipation_order = -1) and c_phi = c / 2.
 ///
-/// Interval of periodicity (0, tau*): |R| <= 2 for 0 < tau < tau*, and |R| - 2 changes sign at
-/// tau*^2, the smallest positive root of odd multiplicity of (P - 2Q)(P + 2Q); infinite when
-/// there is none. The root is located by an exact-arithmetic scan of the sign of P - 2Q and
-/// P + 2Q on the grid z = k/64 up to z = 4096 (and a sign test beyond, at z = 2^40) and refined
-/// by exact bisection (run time); a pair of roots closer than 1/64 would be missed by the scan.
+/// Stability interval (0, tau*) on y'' = -y: where the roots of l^2 - t l + d lie in the closed
+/// unit disk. With d = 1 (interval of periodicity): |t| <= 2, i.e. 2Q - P >= 0 and 2Q + P >= 0.
+/// Otherwise (interval of absolute stability, spectral radius <= 1; Jury's conditions for a real
+/// quadratic): d <= 1 and |t| <= 1 + d, i.e. D^2 - Dn >= 0, D^2 + Dn - Tn D >= 0 and
+/// D^2 + Dn + Tn D >= 0 (the factor D^2 > 0 does not change signs). Each condition polynomial F
+/// must be positive just right of z = 0 (else the interval is empty), and tau*^2 is the
+/// smallest positive root of odd multiplicity (a sign change) of any of them, infinite when
+/// there is none. Roots of even multiplicity inside are isolated points where a root of modulus 1
+/// touches the circle (a double root +-1 there, a Jordan block, is measure-zero and ignored).
+/// The root is an exact algebraic number: the squarefree part of F, its Sturm sequence (exact
+/// primitive remainder sequence) and exact bisection isolate it in a rational interval
+/// (low, high] holding no other root; `refined` narrows it and `compare_squared` compares it
+/// with a rational exactly. Everything is constexpr.
 
 #include <cstdint>
 #include <stdexcept>
@@ -36,13 +51,18 @@ using stability_polynomial = integer_polynomial<exact_algebra_limbs, 2 * max_sta
 
 /// The exact two-step form and linear stability of a tableau. Structural.
 struct linear_stability_result {
-  stability_polynomial numerator{};    ///< P(z), z = tau^2
+  stability_polynomial numerator{};    ///< P(z), z = tau^2: tr M = P / Q in lowest terms
   stability_polynomial denominator{};  ///< Q(z), Q(0) > 0, gcd(P, Q) = 1, integer content 1
-  bool determinant_is_one = false;     ///< det M = 1 exactly (two-step form x^{k+1} = R x^k - x^{k-1})
+  stability_polynomial step_denominator{};        ///< D = det(I + z A), scaled to integers
+  stability_polynomial trace_polynomial{};        ///< Tn: tr M = Tn / D (same scaling)
+  stability_polynomial determinant_polynomial{};  ///< Dn: det M = Dn / D^2 (same scaling)
+  bool determinant_is_one = false;     ///< det M = 1 identically (x^{k+1} = R x^k - x^{k-1})
   int order = 0;                       ///< p: R - 2 cos tau = c tau^(p+2) + ...
   exact_number leading_coefficient{};  ///< c
-  int phase_lag_order = 0;             ///< p (when det M = 1)
-  exact_number phase_lag_constant{};   ///< c / 2
+  int phase_lag_order = 0;             ///< q: phi(H) = c_phi H^(q+1) + O(H^(q+3))
+  exact_number phase_lag_constant{};   ///< c_phi
+  int dissipation_order = -1;          ///< r: 1 - sqrt(det M) = c_d H^(r+1) + ...; -1 when det M = 1
+  exact_number dissipation_constant{};  ///< c_d (0 when det M = 1)
   friend constexpr bool operator==(const linear_stability_result&, const linear_stability_result&) = default;
 };
 
@@ -159,28 +179,73 @@ constexpr stability_integer factorial(int n) {
   return f;
 }
 
+/// The first nonzero coefficient of t / (2 sqrt d) - cos H as a power series in z = H^2, with
+/// t = Tn / D and d = Dn / D^2 (exact power series of 1/D, 1/D^2 and d^(-1/2); the last by
+/// d y' = -(1/2) d' y, i.e. n y_n = sum_{k=1..n} (k/2 - n) d_k y_{n-k}, d_0 = 1). Returns the
+/// index n and the coefficient e (phi(H) = e H^(2n-1) + ...).
+struct series_term {
+  int index = -1;
+  exact_number coefficient{};
+};
+constexpr series_term phase_series(const qpoly& Tn, const qpoly& D, const qpoly& Dn) {
+  constexpr int terms = 2 * max_stability_degree + 8;
+  exact_number inv_d[terms], inv_d2[terms], det[terms], y[terms], tr[terms];
+  exact_number cosine(1);  // (-1)^n / (2n)!
+  for (int n = 0; n < terms; ++n) {
+    if (n > 0) cosine = -cosine / exact_number((2 * n - 1) * (2 * n));
+    exact_number sum;
+    for (int k = 1; k <= n && k <= D.degree; ++k) sum = sum + D.c[k] * inv_d[n - k];
+    inv_d[n] = n == 0 ? exact_number(1) / D.c[0] : -sum / D.c[0];
+    exact_number s2, sd, st;
+    for (int k = 0; k <= n; ++k) s2 = s2 + inv_d[k] * inv_d[n - k];
+    inv_d2[n] = s2;
+    for (int k = 0; k <= n && k <= Dn.degree; ++k) sd = sd + Dn.c[k] * inv_d2[n - k];
+    det[n] = sd;
+    for (int k = 0; k <= n && k <= Tn.degree; ++k) st = st + Tn.c[k] * inv_d[n - k];
+    tr[n] = st;
+    if (n == 0) {
+      if (!(det[0] == exact_number(1))) throw std::domain_error("geomint::linear_stability: det M(0) != 1");
+      y[0] = exact_number(1);
+    } else {
+      exact_number sy;
+      for (int k = 1; k <= n; ++k) sy = sy + exact_number(rational(k - 2 * n, 2)) * det[k] * y[n - k];
+      y[n] = sy / exact_number(n);
+    }
+    exact_number w;
+    for (int k = 0; k <= n; ++k) w = w + tr[k] * y[n - k];
+    w = w / exact_number(2);
+    if (!(w == cosine)) return {n, w - cosine};
+  }
+  throw std::domain_error("geomint::linear_stability: t / (2 sqrt d) - cos H vanishes to the series length");
+}
+
 }  // namespace analysis::detail
 
-/// The exact two-step form, order of R, phase lag of a tableau.
+/// The exact two-step form, order of R, phase lag and dissipation of a tableau.
 constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
   using analysis::detail::qpoly;
+  using analysis::detail::z_times;
   const qpoly D = analysis::detail::bordered_determinant(t, false, t.one, t.b);
   const qpoly E_bbar_one = analysis::detail::bordered_determinant(t, true, t.one, t.bbar);
   const qpoly E_bbar_c = analysis::detail::bordered_determinant(t, true, t.c, t.bbar);
   const qpoly E_b_one = analysis::detail::bordered_determinant(t, true, t.one, t.b);
   const qpoly E_b_c = analysis::detail::bordered_determinant(t, true, t.c, t.b);
   // tr M = (2 D + z (E(bbar, 1) + E(b, c))) / D.
-  const qpoly trace_num = D + D + analysis::detail::z_times(E_bbar_one + E_b_c);
+  const qpoly trace_num = D + D + z_times(E_bbar_one + E_b_c);
   // det M D^2 = (D + z E(bbar,1)) (D + z E(b,c)) - (D + z E(bbar,c)) z E(b,1).
-  const qpoly det_num = (D + analysis::detail::z_times(E_bbar_one)) * (D + analysis::detail::z_times(E_b_c)) -
-                        (D + analysis::detail::z_times(E_bbar_c)) * analysis::detail::z_times(E_b_one);
+  const qpoly det_num = (D + z_times(E_bbar_one)) * (D + z_times(E_b_c)) - (D + z_times(E_bbar_c)) * z_times(E_b_one);
   linear_stability_result out;
   out.determinant_is_one = (det_num - D * D).degree < 0;
 
+  // One scaling lambda clears every denominator: lambda D, lambda Tn and lambda^2 Dn are integral.
   stability_integer scale = analysis::detail::lcm_of_denominators(trace_num, stability_integer(1));
   scale = analysis::detail::lcm_of_denominators(D, scale);
-  stability_polynomial P = analysis::detail::integer_part_scaled(trace_num, scale);
-  stability_polynomial Q = analysis::detail::integer_part_scaled(D, scale);
+  scale = analysis::detail::lcm_of_denominators(det_num, scale);
+  out.step_denominator = analysis::detail::integer_part_scaled(D, scale);
+  out.trace_polynomial = analysis::detail::integer_part_scaled(trace_num, scale);
+  out.determinant_polynomial = analysis::detail::integer_part_scaled(det_num, scale * scale);
+  stability_polynomial P = out.trace_polynomial;
+  stability_polynomial Q = out.step_denominator;
   const stability_polynomial G = polynomial_gcd(P, Q);
   if (G.degree > 0) {
     P = exact_quotient(P, G);
@@ -199,7 +264,8 @@ constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
   // R - 2 cos: the integer E_k = (2k)! P_k - sum_i Q_i 2 (-1)^(k-i) (2k)!/(2(k-i))! is (2k)! times
   // the coefficient of z^k of P - Q 2 cos; the first nonzero one gives c = E_k / ((2k)! Q_0).
   const int last = P.degree + Q.degree + 1;
-  for (int k = 0; k <= last; ++k) {
+  bool expanded = false;
+  for (int k = 0; k <= last && !expanded; ++k) {
     stability_integer E = k <= P.degree ? analysis::detail::factorial(2 * k) * P[k] : stability_integer(0);
     for (int i = 0; i <= k && i <= Q.degree; ++i) {
       stability_integer ratio(2);
@@ -210,104 +276,311 @@ constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
     if (!E.is_zero()) {
       out.order = 2 * k - 2;
       out.leading_coefficient = exact_number(E, analysis::detail::factorial(2 * k) * Q[0]);
-      out.phase_lag_order = out.order;
-      out.phase_lag_constant = out.leading_coefficient / exact_number(2);
-      return out;
+      expanded = true;
     }
   }
-  throw std::domain_error("geomint::linear_stability: R(tau) - 2 cos(tau) has no nonzero term");
+  if (!expanded)
+    throw std::domain_error("geomint::linear_stability: R(tau) - 2 cos(tau) has no nonzero term");
+  if (out.determinant_is_one) {
+    out.phase_lag_order = out.order;
+    out.phase_lag_constant = out.leading_coefficient / exact_number(2);
+    return out;
+  }
+  // Dissipation: d - 1 = (Dn - D^2) / D^2 = delta z^k + ..., so 1 - sqrt(d) = -(delta / 2) H^(2k) + ...
+  const qpoly excess = det_num - D * D;
+  int k = 0;
+  while (excess.c[k].num.is_zero()) ++k;
+  out.dissipation_order = 2 * k - 1;
+  out.dissipation_constant = -(excess.c[k] / (D.c[0] * D.c[0])) / exact_number(2);
+  const analysis::detail::series_term phase = analysis::detail::phase_series(trace_num, D, det_num);
+  out.phase_lag_order = 2 * phase.index - 2;
+  out.phase_lag_constant = phase.coefficient;
+  return out;
 }
 
-/// The interval of periodicity (see the header comment): the polynomial F (P - 2Q or P + 2Q,
-/// primitive) whose smallest positive root of odd multiplicity z* = tau*^2 bounds it, and z*
-/// bracketed by exact rationals [low, high] with high - low <= 2^-120 (run time).
-struct stability_interval {
-  bool unbounded = true;
-  stability_polynomial bounding_polynomial{};
-  exact_number low{}, high{};
+/// Which interval a method has on y'' = -y.
+enum class stability_kind {
+  periodic,  ///< det M = 1: interval of periodicity (|tr M| <= 2)
+  absolute   ///< det M != 1: interval of absolute stability (spectral radius <= 1)
 };
 
-inline stability_interval periodicity_interval(const linear_stability_result& r) {
-  stability_interval out;
-  const stability_polynomial two_q = stability_integer(2) * r.denominator;
-  const stability_polynomial candidates[2] = {r.numerator - two_q, r.numerator + two_q};
-  // sign F(n/d) = sign of sum_k F_k n^k d^(deg - k) (d > 0), in 1536-bit integers: F has degree
-  // <= 8 and the points have numerators and denominators below 2^133 (z < 4096, width 2^-120),
-  // so the sum stays below 2^1300 for coefficients below 2^230 (overflow would throw).
-  using wide = big_integer<48>;
-  auto widen = [](const stability_integer& x) {
-    wide w;
-    for (int k = 0; k < x.size; ++k) w.limb[k] = x.limb[k];
-    w.size = x.size;
-    w.negative = x.negative;
-    return w;
-  };
-  auto sign = [&](const stability_polynomial& p, const exact_number& z) {
-    const wide n = widen(z.num), d = widen(z.den());
-    wide v;
-    for (int k = p.degree; k >= 0; --k) {
-      wide dk(1);
-      for (int j = 0; j < p.degree - k; ++j) dk *= d;
-      v = v * n + widen(p[k]) * dk;
+namespace analysis::detail {
+
+/// Exact root isolation: wide integers for the Sturm sequences and for the signs at rational
+/// points (the sequences of degree-16 polynomials and points of 130-bit numerators need some
+/// 2500 bits; an overflow throws, never a wrong sign).
+inline constexpr int root_limbs = 96;
+using wide_integer = big_integer<root_limbs>;
+using wide_polynomial = integer_polynomial<root_limbs, 2 * max_stability_degree + 2>;
+
+template <int L>
+constexpr wide_integer widen(const big_integer<L>& x) {
+  wide_integer w;
+  for (int k = 0; k < x.size; ++k) w.limb[k] = x.limb[k];
+  w.size = x.size;
+  w.negative = x.negative;
+  return w;
+}
+constexpr wide_polynomial widen(const stability_polynomial& p) {
+  wide_polynomial w;
+  for (int k = 0; k <= p.degree; ++k) w[k] = widen(p[k]);
+  w.trim();
+  return w;
+}
+
+/// Sign of p at the rational x = n / d (d > 0): the sign of sum_k p_k n^k d^(deg - k).
+constexpr int sign_at(const wide_polynomial& p, const exact_number& x) {
+  if (p.is_zero()) return 0;
+  const wide_integer n = widen(x.num), d = widen(x.den());
+  wide_integer v, dk(1);
+  for (int k = p.degree; k >= 0; --k) {
+    v = v * n;
+    if (!p[k].is_zero()) v += p[k] * dk;
+    if (k > 0) dk = dk * d;
+  }
+  return v.sign();
+}
+
+constexpr wide_polynomial derivative(const wide_polynomial& p) {
+  wide_polynomial r;
+  for (int k = 1; k <= p.degree; ++k) r[k - 1] = wide_integer(k) * p[k];
+  r.trim();
+  return r;
+}
+
+/// The Sturm sequence of a squarefree p: p, p', then -(positive multiple of the remainder),
+/// primitive (pseudo-division by |lead| keeps the signs; the content removed is positive).
+struct sturm_sequence {
+  wide_polynomial p[2 * max_stability_degree + 3];
+  int length = 0;
+  /// Sign changes at x (zeros skipped).
+  constexpr int variations(const exact_number& x) const {
+    int count = 0, last = 0;
+    for (int i = 0; i < length; ++i) {
+      const int sg = sign_at(p[i], x);
+      if (sg == 0) continue;
+      if (last != 0 && sg != last) ++count;
+      last = sg;
     }
-    return v.sign();
-  };
-  constexpr int steps_per_unit = 64, last_unit = 4096;
-  exact_number best_low, best_high;
+    return count;
+  }
+};
+constexpr sturm_sequence make_sturm_sequence(const wide_polynomial& h) {
+  sturm_sequence s;
+  s.p[0] = h;
+  s.p[1] = derivative(h);
+  s.length = 2;
+  while (s.p[s.length - 1].degree > 0) {
+    const wide_polynomial& v = s.p[s.length - 1];
+    wide_polynomial r = s.p[s.length - 2];
+    while (!r.is_zero() && r.degree >= v.degree) {
+      const int shift = r.degree - v.degree;
+      const wide_integer f = v.lead().negative ? -r.lead() : r.lead();
+      r = abs(v.lead()) * r;
+      for (int j = 0; j <= v.degree; ++j) r[shift + j] -= f * v[j];
+      r.trim();
+    }
+    if (r.is_zero()) throw std::logic_error("geomint: Sturm sequence of a polynomial that is not squarefree");
+    s.p[s.length] = wide_integer(-1) * primitive_part(r);
+    ++s.length;
+  }
+  return s;
+}
+
+/// bits(|x|): 0 for 0.
+constexpr int bit_length(const wide_integer& x) {
+  if (x.size == 0) return 0;
+  int bits = 32 * (x.size - 1);
+  for (std::uint32_t top = x.limb[x.size - 1]; top != 0; top >>= 1) ++bits;
+  return bits;
+}
+
+constexpr exact_number power_of_two(int e) {
+  exact_number r(1);
+  const exact_number two(2);
+  for (int k = 0; k < e; ++k) r = r * two;
+  for (int k = 0; k > e; --k) r = r / two;
+  return r;
+}
+
+/// A positive real root of F (F(0) != 0), isolated: the only root of F in (low, high], F has the
+/// sign `below` on (low, root); low == high when the root is that rational.
+struct isolated_root {
   bool found = false;
-  for (const stability_polynomial& F : candidates) {
-    if (F.degree < 1) continue;
-    exact_number left(0);
-    // Near 0 the sign is that of the lowest nonzero coefficient; start just above 0.
-    int left_sign = 0;
-    for (int k = 0; k <= F.degree && left_sign == 0; ++k) left_sign = F[k].sign();
-    exact_number lo, hi;
-    bool bracketed = false;
-    for (int k = 1; k <= steps_per_unit * last_unit && !bracketed; ++k) {
-      const exact_number z(rational(k, steps_per_unit));
-      if (found && !(z < best_high)) break;
-      const int sz = sign(F, z);
-      if (sz != 0 && sz != left_sign) {  // an odd number of roots (with multiplicity) in (left, z]
-        lo = left;
-        hi = z;
-        bracketed = true;
+  wide_polynomial polynomial{};
+  exact_number low{}, high{};
+  int below = 0;
+};
+
+/// The smallest positive root of odd multiplicity of F (F(0) != 0): Sturm sequence of the
+/// squarefree part h = F / gcd(F, F'), bisection from the Cauchy bound until one root of h is
+/// isolated, and a sign test of F on both sides of it (an even root is passed over).
+constexpr isolated_root smallest_odd_positive_root(const wide_polynomial& F) {
+  isolated_root out;
+  out.polynomial = F;
+  out.below = F[0].sign();
+  if (F.degree < 1) return out;
+  wide_polynomial h = F;
+  const wide_polynomial g = polynomial_gcd(F, derivative(F));
+  if (g.degree > 0) h = exact_quotient(F, g);
+  if (h.degree < 1) return out;
+  const sturm_sequence sturm = make_sturm_sequence(h);
+  // Cauchy: every root is below 1 + max |h_k / h_n| <= 2^e.
+  int top = 0;
+  for (int k = 0; k < h.degree; ++k) top = std::max(top, bit_length(h[k]));
+  const int e = std::max(1, top - bit_length(h.lead()) + 2);
+  const exact_number upper = power_of_two(e), two(2);
+  exact_number lo(0);
+  while (true) {
+    const int v_upper = sturm.variations(upper);
+    if (sturm.variations(lo) - v_upper == 0) return out;  // no root left: no sign change
+    exact_number a = lo, b = upper;
+    int v_a = sturm.variations(a), v_b = v_upper;
+    while (v_a - v_b > 1) {
+      const exact_number mid = (a + b) / two;
+      const int v_mid = sturm.variations(mid);
+      if (v_a - v_mid >= 1) {
+        b = mid;
+        v_b = v_mid;
+      } else {
+        a = mid;
+        v_a = v_mid;
       }
-      if (sz != 0) left = z;
     }
-    if (!bracketed && !found) {
-      const exact_number far(stability_integer(std::int64_t(1) << 40), stability_integer(1));
-      if (sign(F, far) != left_sign) {
-        lo = left;
-        hi = far;
-        bracketed = true;
+    // One root r of h in (a, b]; F has the sign `below` on (lo, r).
+    if (sign_at(h, b) == 0) {  // r = b: the sign just right of it
+      exact_number c = b + (b - a);
+      while (sturm.variations(b) - sturm.variations(c) > 0) c = (b + c) / two;
+      if (sign_at(F, c) != out.below) {
+        out.found = true;
+        out.low = out.high = b;
+        return out;
       }
+    } else if (sign_at(F, b) != out.below) {
+      out.found = true;
+      out.low = a;
+      out.high = b;
+      return out;
     }
-    if (!bracketed) continue;
-    exact_number width_bound(1);
-    for (int b = 0; b < 120; ++b) width_bound = width_bound / exact_number(2);
-    for (int iteration = 0; iteration < 400 && width_bound < hi - lo; ++iteration) {
-      const exact_number mid = (lo + hi) / exact_number(2);
-      const int sm = sign(F, mid);
-      if (sm == 0) {
-        lo = hi = mid;
-        break;
-      }
-      if (sm == left_sign) lo = mid;
-      else hi = mid;
-    }
-    if (!found || hi < best_high) {
-      best_low = lo;
-      best_high = hi;
-      out.bounding_polynomial = F;
-      found = true;
+    lo = b;
+  }
+}
+
+/// Halves (low, high] around the root until high - low <= 2^-bits high.
+constexpr void refine(isolated_root& r, int bits) {
+  const exact_number two(2), tolerance = power_of_two(-bits);
+  while (r.low < r.high && tolerance * r.high < r.high - r.low) {
+    const exact_number mid = (r.low + r.high) / two;
+    const int s = sign_at(r.polynomial, mid);
+    if (s == 0) {
+      r.low = r.high = mid;
+    } else if (s == r.below) {
+      r.low = mid;
+    } else {
+      r.high = mid;
     }
   }
-  if (found) {
-    out.unbounded = false;
-    out.low = best_low;
-    out.high = best_high;
-    const stability_integer g = content(out.bounding_polynomial);
-    for (int k = 0; k <= out.bounding_polynomial.degree; ++k) out.bounding_polynomial[k] = exact_quotient(out.bounding_polynomial[k], g);
+}
+
+/// sign(x - root), exactly.
+constexpr int compare_with_root(const isolated_root& r, const exact_number& x) {
+  if (!(r.low < x)) return r.low == r.high && x == r.low ? 0 : -1;
+  if (r.high < x) return 1;
+  const int s = sign_at(r.polynomial, x);
+  return s == 0 ? 0 : (s == r.below ? -1 : 1);
+}
+
+/// F / z^k with F(0) != 0 (F not zero).
+constexpr wide_polynomial without_zero_roots(wide_polynomial F) {
+  int k = 0;
+  while (F[k].is_zero()) ++k;
+  wide_polynomial r;
+  for (int j = k; j <= F.degree; ++j) r[j - k] = F[j];
+  r.trim();
+  return primitive_part(r);
+}
+
+}  // namespace analysis::detail
+
+/// The stability interval (0, tau*) of a method on y'' = -y (see the header comment): empty,
+/// unbounded, or tau*^2 = z* an exact algebraic number, the isolated root of `bound`.
+struct stability_interval {
+  stability_kind kind = stability_kind::periodic;
+  bool empty = false;
+  bool unbounded = true;
+  analysis::detail::isolated_root bound{};  ///< z* = tau*^2 with its polynomial and bracket
+  /// sign(z - z*) for a rational z = tau^2 (-1: inside the interval; unbounded: always -1).
+  constexpr int compare_squared(const exact_number& z) const {
+    if (empty) return 1;
+    if (unbounded) return -1;
+    return analysis::detail::compare_with_root(bound, z);
+  }
+  /// z* bracketed by (low, high] with high - low <= 2^-bits high.
+  constexpr stability_interval refined(int bits) const {
+    stability_interval r = *this;
+    if (!empty && !unbounded) analysis::detail::refine(r.bound, bits);
+    return r;
+  }
+  constexpr const exact_number& low() const { return bound.low; }
+  constexpr const exact_number& high() const { return bound.high; }
+};
+
+/// The exact stability interval: of periodicity when det M = 1, of absolute stability otherwise.
+constexpr stability_interval linear_stability_interval(const linear_stability_result& r) {
+  using analysis::detail::wide_polynomial;
+  using analysis::detail::widen;
+  stability_interval out;
+  out.kind = r.determinant_is_one ? stability_kind::periodic : stability_kind::absolute;
+  wide_polynomial conditions[3];
+  int count = 0;
+  if (r.determinant_is_one) {
+    const wide_polynomial P = widen(r.numerator), two_q = analysis::detail::wide_integer(2) * widen(r.denominator);
+    conditions[count++] = two_q - P;  // 2 - R >= 0
+    conditions[count++] = two_q + P;  // 2 + R >= 0
+  } else {
+    const wide_polynomial D = widen(r.step_denominator), Tn = widen(r.trace_polynomial), Dn = widen(r.determinant_polynomial);
+    const wide_polynomial D2 = D * D, TD = Tn * D;
+    conditions[count++] = D2 - Dn;       // d <= 1
+    conditions[count++] = D2 + Dn - TD;  // 1 + d - t >= 0
+    conditions[count++] = D2 + Dn + TD;  // 1 + d + t >= 0
+  }
+  for (int i = 0; i < count; ++i) {
+    if (conditions[i].is_zero()) continue;  // holds with equality for every tau
+    const wide_polynomial F = analysis::detail::without_zero_roots(conditions[i]);
+    if (F[0].sign() < 0) {  // violated just right of tau = 0
+      out.empty = true;
+      out.unbounded = false;
+      return out;
+    }
+    analysis::detail::isolated_root root = analysis::detail::smallest_odd_positive_root(F);
+    if (!root.found) continue;
+    if (out.unbounded) {
+      out.bound = root;
+      out.unbounded = false;
+      continue;
+    }
+    // Keep the smaller of two algebraic numbers: narrow both brackets until they are disjoint or
+    // one's rational bracket end is the other's root.
+    for (int bits = 8;; bits += 8) {
+      if (!(out.bound.low < root.high)) {  // root <= root.high <= out.bound.low < out.bound
+        out.bound = root;
+        break;
+      }
+      if (!(root.low < out.bound.high)) break;  // out.bound <= out.bound.high <= root.low < root
+      if (root.low == root.high && analysis::detail::compare_with_root(out.bound, root.low) >= 0) {
+        out.bound = root;
+        break;
+      }
+      if (out.bound.low == out.bound.high && analysis::detail::compare_with_root(root, out.bound.low) >= 0) break;
+      if (bits > 192) {
+        // Brackets still overlapping at 2^-192: equal when the polynomials share a factor (a
+        // common root); otherwise no decision (an exception, never a guess).
+        if (polynomial_gcd(out.bound.polynomial, root.polynomial).degree > 0) break;
+        throw std::logic_error("geomint::linear_stability_interval: cannot separate two bounds");
+      }
+      analysis::detail::refine(out.bound, bits);
+      analysis::detail::refine(root, bits);
+    }
   }
   return out;
 }
