@@ -169,3 +169,35 @@ static_assert(rational_rkn_tableau<2>({rational(0), rational(1)}, {{{rational(0)
                                       {rational(1, 2), rational(0)}, {rational(1, 2), rational(1, 2)}) == trapezoidal_tableau());
 
 }  // namespace
+
+// Symmetry up to any permutation of stages. Phi: c = 1, a = 0, bbar = 1/3, b = 1 (explicit,
+// not symmetric: its adjoint has c* = 0). Its adjoint (scheme_structure.hpp: c* = 1 - c,
+// a* = (1 - c) b - bbar + a, bbar* = b - bbar) is c = 0, a = -1/3, bbar = 2/3, b = 1, and the
+// composition Phi*_{tau/2} o Phi_{tau/2} is symmetric (Hairer, Lubich, Wanner, Geometric
+// Numerical Integration, 2nd ed., section II.3). Composed by hand (h = tau/2): stage 1 at
+// q + tau/2 p, stage 2 = q + tau/2 p + tau^2/12 (f1 - f2), q1 = q + tau p + tau^2 (f1/3 + f2/6),
+// p1 = p + tau (f1 + f2)/2. Both nodes are 1/2; the adjoint swaps the two stages, so pairing
+// them by c_i + c_j = 1 alone (the identity here) misses the symmetry.
+constexpr exact_rkn_tableau adjoint_composition = rational_rkn_tableau<2>(
+    {rational(1, 2), rational(1, 2)}, {{{rational(0), rational(0)}, {rational(1, 12), rational(-1, 12)}}},
+    {rational(1, 3), rational(1, 6)}, {rational(1, 2), rational(1, 2)});
+static_assert(symmetry(adjoint_composition).symmetric);
+static_assert(symmetry(adjoint_composition).permutation[0] == 1 && symmetry(adjoint_composition).permutation[1] == 0);
+// The same nodes and weights with a22 = 0: no permutation satisfies the adjoint conditions
+// (the swap needs a11 = a*_00 = 1/4 - 1/3 = -1/12 in row 2; the identity needs bbar = b - bbar).
+constexpr exact_rkn_tableau not_symmetric = rational_rkn_tableau<2>(
+    {rational(1, 2), rational(1, 2)}, {{{rational(0), rational(0)}, {rational(1, 12), rational(0)}}},
+    {rational(1, 3), rational(1, 6)}, {rational(1, 2), rational(1, 2)});
+static_assert(symmetry(not_symmetric).nodes_symmetric && !symmetry(not_symmetric).symmetric);
+// Stormer-Verlet as two half steps (c = 0, 1/2, 1/2, 1; the middle stages evaluate the same
+// point): symmetric (HLW, section II.3). Nystrom's order-4 method (above) is not: the nodes force
+// sigma = (3, 2, 1), and a*_13 = (1 - c_1) b_3 - bbar_3 + a_13 = 1/6 differs from a_31 = 0.
+constexpr exact_rkn_tableau verlet_twice = rational_rkn_tableau<4>(
+    {rational(0), rational(1, 2), rational(1, 2), rational(1)},
+    {{{rational(0), rational(0), rational(0), rational(0)},
+      {rational(1, 8), rational(0), rational(0), rational(0)},
+      {rational(1, 8), rational(0), rational(0), rational(0)},
+      {rational(1, 4), rational(1, 8), rational(1, 8), rational(0)}}},
+    {rational(1, 4), rational(1, 8), rational(1, 8), rational(0)}, {rational(1, 4), rational(1, 4), rational(1, 4), rational(1, 4)});
+static_assert(symmetry(verlet_twice).symmetric && tree_order(verlet_twice) == 2);
+static_assert(!symmetry(nystrom4).symmetric);

@@ -267,3 +267,27 @@ TEST_CASE("user tableaux built at run time equal the ones built at compile time"
   CHECK(from_polynomial == lpf_tableau<3, gauss_interior>());
   CHECK(tree_order(from_nodes) == 4);
 }
+
+TEST_CASE("symmetry verdicts agree with stepping forward and back (repeated nodes)", "[analysis][tableau][symmetric]") {
+  // A method is symmetric iff Phi_{-tau} o Phi_tau = id (HLW, section II.3). Checked on the
+  // pendulum in 50 digits for the composition Phi*_{tau/2} o Phi_{tau/2} (nodes 1/2, 1/2, the
+  // adjoint swaps the stages; see static_scheme_analysis.cpp) and for the same tableau with
+  // a22 = 0, which is not symmetric.
+  const auto tableau = [](const rational& a22) {
+    return rational_rkn_tableau<2>({rational(1, 2), rational(1, 2)}, {{{rational(0), rational(0)}, {rational(1, 12), a22}}},
+                                   {rational(1, 3), rational(1, 6)}, {rational(1, 2), rational(1, 2)});
+  };
+  using std::abs;
+  const T tau = T(1) / T(4), q0(1), p0 = T(1) / T(2);
+  for (const rational& a22 : {rational(-1, 12), rational(0)}) {
+    const exact_rkn_tableau exact = at_run_time(tableau(a22));
+    const numeric_rkn_tableau<T> t = numeric_tableau<T>(exact, nullptr);
+    const auto [q1, p1] = rkn_step(t, q0, p0, tau);
+    const auto [q2, p2] = rkn_step(t, q1, p1, -tau);
+    const T back = std::max(T(abs(q2 - q0)), T(abs(p2 - p0)));
+    INFO("a22 = " << a22 << ": |Phi_{-tau} Phi_tau (q0, p0) - (q0, p0)| = " << back);
+    if (symmetry(exact).symmetric) CHECK(back <= geomint::test::eps_tol<T>(1000));
+    else CHECK(back > T(1) / T(1000000));
+    CHECK(symmetry(exact).symmetric == (a22 == rational(-1, 12)));
+  }
+}

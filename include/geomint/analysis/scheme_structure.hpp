@@ -13,12 +13,21 @@
 /// the tableau (monomials 1..x^{s-1} modulo N, or stage values); they vanish iff the
 /// conditions hold (the change of basis is invertible).
 ///
-/// Symmetry: the adjoint of (c, a, bbar, b) is (1 - c, a*, b - bbar, b) with
-/// a*_ij = (1 - c_i) b_j - bbar_j + a_ij (one step backwards with -tau, solved for the new
-/// point). The method is symmetric iff the adjoint equals the method up to the permutation of
-/// stages c_i -> 1 - c_i (HLW, section V.2). In the monomial basis that permutation is
-/// P: V(x) -> V(1 - x) mod N, which exists iff N(1 - x) = (-1)^s N(x); the defects are
-/// A* - P A P, bbar* - bbar P and b - b P.
+/// Symmetry: the adjoint Phi*_tau = Phi_{-tau}^{-1} (HLW, section II.3) of (c, a, bbar, b) is
+/// (1 - c, a*, b - bbar, b) with a*_ij = (1 - c_i) b_j - bbar_j + a_ij: from (q1, p1) one step
+/// with -tau gives p = p1 - tau b^T f, q = q1 - tau p1 + tau^2 bbar^T f and the stages
+/// Q_i = q1 - c_i tau p1 + tau^2 a_i^T f; solved for (q1, p1) that is p1 = p + tau b^T f,
+/// q1 = q + tau p + tau^2 (b - bbar)^T f, Q_i = q + (1 - c_i) tau p + tau^2 a*_i^T f. The method
+/// is symmetric iff its adjoint is the method with the stages permuted (HLW, section V.2; for RK,
+/// Theorem V.2.3 with sigma(i) = s + 1 - i): some permutation sigma with
+///   c_sigma(i) = 1 - c_i,   a_sigma(i)sigma(j) = a*_ij,   bbar_sigma(j) = b_j - bbar_j,   b_sigma(j) = b_j.
+/// Stage values (explicit tableaux): sigma is searched among all permutations (backtracking over
+/// the stages, the conditions on the stages assigned so far pruning), so a symmetric method whose
+/// adjoint swaps two stages with equal nodes (a composition Phi*_{tau/2} o Phi_{tau/2}) is found.
+/// Monomial basis: the nodes are the distinct roots of N, so sigma is the reflection
+/// P: V(x) -> V(1 - x) mod N, which exists iff N(1 - x) = (-1)^s N(x). The defects are
+/// A* - P A P^{-1}, bbar* - bbar P^{-1} and b - b P^{-1} for sigma (for stage values without a
+/// permutation satisfying everything: for the first one matching the nodes).
 
 #include "geomint/analysis/rkn_tableau.hpp"
 
@@ -37,10 +46,11 @@ struct symplecticity_result {
 /// Exact symmetry verdict with its defects. Structural.
 struct symmetry_result {
   bool symmetric = false;
-  bool nodes_symmetric = false;  ///< the stage permutation c -> 1 - c exists
-  exact_number a_defect[max_exact_stages][max_exact_stages];  ///< A* - P A P
-  exact_number bbar_defect[max_exact_stages];                 ///< bbar* - bbar P
-  exact_number b_defect[max_exact_stages];                    ///< b - b P
+  bool nodes_symmetric = false;  ///< a stage permutation sigma with c_sigma(i) = 1 - c_i exists
+  int permutation[max_exact_stages]{};  ///< sigma (stage values; the reflection for the monomial basis: unused)
+  exact_number a_defect[max_exact_stages][max_exact_stages];  ///< A* - P A P^{-1}
+  exact_number bbar_defect[max_exact_stages];                 ///< bbar* - bbar P^{-1}
+  exact_number b_defect[max_exact_stages];                    ///< b - b P^{-1}
   friend constexpr bool operator==(const symmetry_result&, const symmetry_result&) = default;
 };
 
@@ -88,18 +98,46 @@ constexpr symplecticity_result symplecticity(const exact_rkn_tableau& t) {
 }
 
 namespace analysis::detail {
-/// The stage permutation c -> 1 - c as a matrix on the tableau's basis; false if none exists.
-constexpr bool reflection_matrix(const exact_rkn_tableau& t, exact_number (&P)[max_exact_stages][max_exact_stages]) {
+/// The adjoint's a*_ij = (1 - c_i) b_j - bbar_j + a_ij (stage values).
+constexpr exact_number adjoint_a(const exact_rkn_tableau& t, int i, int j) {
+  return (exact_number(1) - t.c[i]) * t.b[j] - t.bbar[j] + t.a[i][j];
+}
+
+/// Extends sigma(0..i-1) to a permutation with the adjoint conditions (backtracking).
+constexpr bool extend_symmetry_permutation(const exact_rkn_tableau& t, int i, int* sigma, bool* used, bool nodes_only) {
+  const int s = t.stages;
+  if (i == s) return true;
+  for (int k = 0; k < s; ++k) {
+    if (used[k] || !(t.c[k] == exact_number(1) - t.c[i])) continue;
+    bool ok = true;
+    if (!nodes_only) {
+      ok = t.b[k] == t.b[i] && t.bbar[k] == t.b[i] - t.bbar[i] && t.a[k][k] == adjoint_a(t, i, i);
+      for (int j = 0; j < i && ok; ++j)
+        ok = t.a[k][sigma[j]] == adjoint_a(t, i, j) && t.a[sigma[j]][k] == adjoint_a(t, j, i);
+    }
+    if (!ok) continue;
+    sigma[i] = k;
+    used[k] = true;
+    if (extend_symmetry_permutation(t, i + 1, sigma, used, nodes_only)) return true;
+    used[k] = false;
+  }
+  return false;
+}
+
+/// The stage permutation sigma as a matrix P on the tableau's basis and its inverse; false if
+/// none maps the nodes.
+constexpr bool reflection_matrix(const exact_rkn_tableau& t, exact_number (&P)[max_exact_stages][max_exact_stages],
+                                 exact_number (&P_inverse)[max_exact_stages][max_exact_stages], int (&sigma)[max_exact_stages]) {
   const int s = t.stages;
   if (t.basis == stage_basis::values) {
     bool used[max_exact_stages]{};
+    if (!extend_symmetry_permutation(t, 0, sigma, used, false)) {
+      for (int k = 0; k < s; ++k) used[k] = false;
+      if (!extend_symmetry_permutation(t, 0, sigma, used, true)) return false;
+    }
     for (int i = 0; i < s; ++i) {
-      int match = -1;
-      for (int j = 0; j < s && match < 0; ++j)
-        if (!used[j] && t.c[i] + t.c[j] == exact_number(1)) match = j;
-      if (match < 0) return false;
-      used[match] = true;
-      P[i][match] = exact_number(1);  // (P v)_i = v_match
+      P[i][sigma[i]] = exact_number(1);  // (P v)_i = v_sigma(i)
+      P_inverse[sigma[i]][i] = exact_number(1);
     }
     return true;
   }
@@ -124,6 +162,8 @@ constexpr bool reflection_matrix(const exact_rkn_tableau& t, exact_number (&P)[m
       binom = binom * exact_number(-(l - j)) / exact_number(j + 1);
     }
   }
+  for (int i = 0; i < s; ++i)  // V(1 - (1 - x)) = V(x): P is an involution
+    for (int l = 0; l < s; ++l) P_inverse[i][l] = P[i][l];
   return true;
 }
 }  // namespace analysis::detail
@@ -131,8 +171,8 @@ constexpr bool reflection_matrix(const exact_rkn_tableau& t, exact_number (&P)[m
 constexpr symmetry_result symmetry(const exact_rkn_tableau& t) {
   symmetry_result r;
   const int s = t.stages;
-  exact_number P[max_exact_stages][max_exact_stages];
-  r.nodes_symmetric = analysis::detail::reflection_matrix(t, P);
+  exact_number P[max_exact_stages][max_exact_stages], P_inverse[max_exact_stages][max_exact_stages];
+  r.nodes_symmetric = analysis::detail::reflection_matrix(t, P, P_inverse, r.permutation);
   if (!r.nodes_symmetric) return r;
   auto matrix_times = [s](const exact_number (&X)[max_exact_stages][max_exact_stages],
                           const exact_number (&Y)[max_exact_stages][max_exact_stages],
@@ -146,7 +186,7 @@ constexpr symmetry_result symmetry(const exact_rkn_tableau& t) {
       }
   };
   exact_number AP[max_exact_stages][max_exact_stages], PAP[max_exact_stages][max_exact_stages];
-  matrix_times(t.a, P, AP);
+  matrix_times(t.a, P_inverse, AP);
   matrix_times(P, AP, PAP);
   r.symmetric = true;
   for (int l = 0; l < s; ++l) {
@@ -162,8 +202,8 @@ constexpr symmetry_result symmetry(const exact_rkn_tableau& t) {
     // Functionals on e_l: bbar*(e_l) = b_l - bbar_l against bbar(P e_l); b against b(P e_l).
     exact_number bbar_p, b_p;
     for (int k = 0; k < s; ++k) {
-      bbar_p = bbar_p + t.bbar[k] * P[k][l];
-      b_p = b_p + t.b[k] * P[k][l];
+      bbar_p = bbar_p + t.bbar[k] * P_inverse[k][l];
+      b_p = b_p + t.b[k] * P_inverse[k][l];
     }
     r.bbar_defect[l] = t.b[l] - t.bbar[l] - bbar_p;
     r.b_defect[l] = t.b[l] - b_p;
