@@ -32,7 +32,10 @@
 /// any scalar type from the exact data and the numerically computed nodes (core/nodes.hpp).
 
 #include <array>
+#include <concepts>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
@@ -349,12 +352,98 @@ constexpr exact_rkn_tableau rational_rkn_tableau(const std::array<NodeEntry, S>&
   }
   return t;
 }
+namespace analysis::detail {
+template <class>
+inline constexpr bool dependent_false = false;
+}  // namespace analysis::detail
+
+/// One entry of a braced tableau list (`rational_rkn_tableau<S>({...}, ...)`): an exact rational
+/// or an integer. A std::array filled from a shorter braced list value-initialises the missing
+/// entries; here that default constructor is a static_assert, so that a left-out entry is a
+/// compile error and never a silent 0. (A longer list is a compile error of std::array itself.)
+struct tableau_entry {
+  rational value;
+  constexpr tableau_entry(const rational& v) : value(v) {}  // NOLINT(google-explicit-constructor)
+  template <std::integral Int>
+    requires(!std::is_same_v<Int, bool>)
+  constexpr tableau_entry(Int n) : value(n) {}  // NOLINT(google-explicit-constructor)
+  template <std::floating_point F>
+  constexpr tableau_entry(F) : value() {  // NOLINT(google-explicit-constructor)
+    static_assert(analysis::detail::dependent_false<F>,
+                  "geomint::rational_rkn_tableau: every entry must be an exact geomint::rational (floating-point entries are "
+                  "not exact; write rational(1, 3), not 1.0 / 3)");
+  }
+  template <class Missing = void>
+  constexpr tableau_entry() : value() {
+    static_assert(analysis::detail::dependent_false<Missing>,
+                  "geomint::rational_rkn_tableau: a braced list is shorter than the number of stages S (c, bbar, b and every "
+                  "row of a need S entries, a needs S rows; a left-out entry would be a silent 0)");
+  }
+};
+
 /// The same with the number of stages given, for braced lists: `rational_rkn_tableau<2>({...}, ...)`.
+/// Every list must have exactly S entries (see tableau_entry).
 template <int S>
-constexpr exact_rkn_tableau rational_rkn_tableau(const std::array<rational, S>& c, const std::array<std::array<rational, S>, S>& a,
-                                                 const std::array<rational, S>& bbar, const std::array<rational, S>& b) {
-  return rational_rkn_tableau<rational, S, rational, S, S, rational, S, rational, S>(c, a, bbar, b);
+constexpr exact_rkn_tableau rational_rkn_tableau(const std::array<tableau_entry, S>& c,
+                                                 const std::array<std::array<tableau_entry, S>, S>& a,
+                                                 const std::array<tableau_entry, S>& bbar, const std::array<tableau_entry, S>& b) {
+  std::array<rational, S> c_values{}, bbar_values{}, b_values{};
+  std::array<std::array<rational, S>, S> a_values{};
+  for (std::size_t i = 0; i < S; ++i) {
+    c_values[i] = c[i].value;
+    bbar_values[i] = bbar[i].value;
+    b_values[i] = b[i].value;
+    for (std::size_t j = 0; j < S; ++j) a_values[i][j] = a[i][j].value;
+  }
+  return rational_rkn_tableau<rational, S, rational, S, S, rational, S, rational, S>(c_values, a_values, bbar_values, b_values);
 }
+
+/// Integer literals of any length for tableau entries: `123456789012345678_q` is a
+/// geomint::rational, and a literal that does not fit (|n| > 2^63 - 1) is a compile error. A plain
+/// integer literal above 2^64 - 1 is truncated by GCC with only a warning ("integer constant is
+/// too large for its type"; Clang rejects it) before any library code sees it: write large
+/// numerators and denominators with _q, e.g. `9007199254740993_q / 3`.
+namespace literals {
+namespace detail {
+__extension__ using unsigned_wide = unsigned __int128;
+struct parsed_literal {
+  bool decimal = true;
+  bool fits = true;
+  std::int64_t value = 0;
+};
+template <char... Digits>
+consteval parsed_literal parse_literal() {
+  parsed_literal out;
+  constexpr char digits[] = {Digits...};
+  if (sizeof...(Digits) > 1 && digits[0] == '0') out.decimal = false;  // 0x.., 0b.., octal
+  unsigned_wide v = 0;
+  for (char ch : digits) {
+    if (ch == '\'') continue;
+    if (ch < '0' || ch > '9') {
+      out.decimal = false;
+      break;
+    }
+    v = v * 10 + static_cast<unsigned>(ch - '0');
+    if (v > static_cast<unsigned_wide>(std::numeric_limits<std::int64_t>::max())) {
+      out.fits = false;
+      break;
+    }
+  }
+  if (out.decimal && out.fits) out.value = static_cast<std::int64_t>(v);
+  return out;
+}
+}  // namespace detail
+
+template <char... Digits>
+consteval rational operator""_q() {
+  constexpr detail::parsed_literal parsed = detail::parse_literal<Digits...>();
+  static_assert(parsed.decimal, "geomint::literals::operator\"\"_q: write a decimal integer (no prefix, no leading 0)");
+  static_assert(parsed.fits,
+                "geomint::literals::operator\"\"_q: the integer literal does not fit geomint::rational (|n| <= 2^63 - 1 = "
+                "9223372036854775807)");
+  return rational(parsed.value);
+}
+}  // namespace literals
 
 /// The midpoint VI (scheme 17) and the trapezoidal VI (Stormer-Verlet).
 constexpr exact_rkn_tableau midpoint_tableau() {
