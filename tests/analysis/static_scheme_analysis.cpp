@@ -97,6 +97,15 @@ static_assert(symplecticity(trapezoidal_tableau()).symplectic && symmetry(trapez
 
 // Principal error constant of the midpoint VI: C^2 = 1/64 (three trees of order 3).
 static_assert(order_analysis(midpoint_tableau()).error_constant_squared == exact_number(rational(1, 64)));
+// Per component, Stormer-Verlet (order 2) by Taylor expansion of one step, f = f(q), p = q':
+//   q1 = q + tau p + tau^2/2 f,  exact q(tau) = q + tau p + tau^2/2 f + tau^3/6 f'p + ...,
+//   so q1 - q(tau) = -(1/6) tau^3 f'p + ...:                                  C_q^2 = 1/36;
+//   p1 = p + tau/2 (f + f(q + tau p + tau^2/2 f)) = p + tau f + tau^2/2 f'p + tau^3 (f''(p,p)/4
+//   + f'f/4) + ..., exact p(tau) = ... + tau^3 (f''(p,p)/6 + f'f/6) + ...: coefficients 1/12 and
+//   1/12,                                                                     C_p^2 = 1/72.
+static_assert(order_analysis(trapezoidal_tableau()).position_error_constant_squared == exact_number(rational(1, 36)));
+static_assert(order_analysis(trapezoidal_tableau()).velocity_error_constant_squared == exact_number(rational(1, 72)));
+static_assert(order_analysis(trapezoidal_tableau()).error_constant_squared == exact_number(rational(1, 24)));
 
 // Linear stability: eq. (16) R = (16 - 6 tau^2)/(8 + tau^2), eq. (17) R = (8 - 2 tau^2)/(4 + tau^2).
 constexpr bool has_r(const linear_stability_result& r, std::int64_t p0, std::int64_t p1, std::int64_t q0, std::int64_t q1) {

@@ -16,8 +16,10 @@
 ///   principal error constant  C_{p+1} = sqrt( sum over those trees of (e(u)/sigma(u))^2 ),
 ///
 /// the 2-norm of the coefficients of the leading local error term (the usual measure of
-/// Dormand and Prince; here for both components of the RKN step). It is stored exactly as
-/// C_{p+1}^2, a rational.
+/// Dormand and Prince), for the position alone (the q-trees of size p), the velocity alone (the
+/// p-trees of size p + 1; these two are the per-component constants ||T^(p+1)||, ||T'^(p+1)|| in
+/// which RKN constants are published) and both together (C^2 = C_q^2 + C_p^2). A component whose
+/// own order exceeds p has constant 0. All are stored exactly as squares, rationals.
 
 #include <cstdint>
 #include <stdexcept>
@@ -47,6 +49,8 @@ struct order_summary {
   int conditions_checked = 0;          ///< conditions evaluated (all orders <= p + 1)
   int nonzero_defects = 0;             ///< at order p + 1
   exact_number error_constant_squared{};  ///< C_{p+1}^2 (0 when order_is_lower_bound)
+  exact_number position_error_constant_squared{};  ///< C_q^2: the q-component's trees
+  exact_number velocity_error_constant_squared{};  ///< C_p^2: the p-component's trees
   friend constexpr bool operator==(const order_summary&, const order_summary&) = default;
 };
 
@@ -79,6 +83,8 @@ constexpr order_summary evaluate_order_conditions(const exact_rkn_tableau& t, in
     failed = true;
     const exact_number coefficient = e / exact_number(u.sigma);
     out.error_constant_squared = out.error_constant_squared + coefficient * coefficient;
+    exact_number& part = component == rkn_component::q ? out.position_error_constant_squared : out.velocity_error_constant_squared;
+    part = part + coefficient * coefficient;
     ++out.nonzero_defects;
     if (defects) defects->push_back(tree_defect{index, component, e, coefficient});
     (void)order;
