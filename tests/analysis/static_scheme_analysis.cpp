@@ -210,3 +210,12 @@ constexpr exact_rkn_tableau verlet_twice = rational_rkn_tableau<4>(
     {rational(1, 4), rational(1, 8), rational(1, 8), rational(0)}, {rational(1, 4), rational(1, 4), rational(1, 4), rational(1, 4)});
 static_assert(symmetry(verlet_twice).symmetric && tree_order(verlet_twice) == 2);
 static_assert(!symmetry(nystrom4).symmetric);
+
+// Stage order (order_conditions.hpp): an s-stage collocation method integrates q'' = g(t) exactly
+// in its stages for g of degree s - 1 (HNW I, section II.14), stage order s + 1; Gauss RK (RK stage
+// order s: A c^(j-1) = c^j / j, j <= s) as an RKN method, a = A^2, is exact for k <= s - 2: stage
+// order s (Galerkin m = 3: 3); Stormer-Verlet's
+// stages are q and q + tau p + tau^2 f/2 (exact for constant g: stage order 2); Nystrom's method
+// has a31 + a32 = 1/2 = c3^2/2 but a32 c2 = 1/4 != c3^3/6: stage order 2.
+static_assert(stage_order(lpf_tableau<4, gauss_lobatto>()) == 4 && stage_order(galerkin_tableau<3>()) == 3);
+static_assert(stage_order(trapezoidal_tableau()) == 2 && stage_order(nystrom4) == 2);

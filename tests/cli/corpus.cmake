@@ -117,3 +117,12 @@ geomint_cli_corpus(geomint-workprecision "--max-seconds must be a finite number 
 geomint_cli_corpus(geomint-workprecision "--digits must be one of 16, 50" --digits 100)
 geomint_cli_corpus(geomint-workprecision "--passes is out of range" --passes 0)
 geomint_cli_corpus(geomint-workprecision "--passes expects an integer in 1..10" --passes x)
+
+# geomint-scheme: options that do not apply to the chosen scheme are usage errors, never ignored
+# (--m has no meaning for midpoint and trapezoidal, --nodes for galerkin, midpoint, trapezoidal).
+set(_geomint_corpus_index 100)
+geomint_cli_corpus(geomint-scheme "--m does not apply to --scheme midpoint" --scheme midpoint --m 3)
+geomint_cli_corpus(geomint-scheme "--m does not apply to --scheme trapezoidal" --analyse --scheme trapezoidal --m 2..4)
+geomint_cli_corpus(geomint-scheme "--m does not apply to --scheme midpoint" --scheme midpoint --all)
+geomint_cli_corpus(geomint-scheme "--nodes does not apply to --scheme galerkin" --scheme galerkin --nodes lobatto --m 2)
+geomint_cli_corpus(geomint-scheme "--nodes does not apply to --scheme trapezoidal" --tableau --scheme trapezoidal --nodes all)

@@ -4,9 +4,13 @@
 //   geomint-scheme [--m M|all] [--nodes F] [--scheme lpf|midpoint|trapezoidal|galerkin] [--csv]
 //       the exact two-step form x^{k+1} = R(tau) x^k - x^{k-1} for y'' = -y (every family)
 //   geomint-scheme --analyse [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all] [--csv]
-//       order (Nystrom trees), symplecticity, symmetry, error constant, stability, phase lag
-//   geomint-scheme --tableau [--scheme S] [--nodes F] [--m M]
+//       order (Nystrom trees), stage order, symplecticity, symmetry, error constants, linear
+//       stability (interval of periodicity or of absolute stability), dissipation, phase lag
+//   geomint-scheme --tableau [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all]
 //       the exact tableau (node polynomial and monomial-basis matrices, or rationals)
+//
+// --m applies to lpf and galerkin, --nodes to lpf only: given to another scheme they are usage
+// errors (exit 2), never ignored; every m of a range is printed.
 //
 // The analysis uses the constexpr functions of the headers, evaluated here at run time (the
 // compile-time side is tests/analysis/static_scheme_analysis.cpp).
@@ -37,16 +41,22 @@ const char* usage_text =
     "  default     the two-step form x^{k+1} = R(tau) x^k - x^{k-1} for L = xdot^2/2 - x^2/2:\n"
     "              R = P(tau^2)/Q(tau^2) in lowest terms and R - 2 cos tau = c tau^(p+2) + ...\n"
     "              (--csv: m,numerator,denominator,order,leading_coefficient)\n"
-    "  --analyse   order by Nystrom trees, exact symplecticity and symmetry, principal error\n"
-    "              constant C (2-norm of the tau^(p+1) error coefficients), interval of\n"
-    "              periodicity (0, tau*) and phase-lag order (--csv: scheme,nodes,m,stages,order,\n"
-    "              symplectic,symmetric,error_constant,stability_interval,phase_lag_order)\n"
+    "  --analyse   order by Nystrom trees, exact symplecticity and symmetry (up to any stage\n"
+    "              permutation), principal error constant C (2-norm of the tau^(p+1) error\n"
+    "              coefficients; also per component: position C_q, velocity C_p), stability on\n"
+    "              y'' = -y: interval of periodicity (det M = 1) or of absolute stability (0, tau*),\n"
+    "              dissipation and phase-lag orders (van der Houwen-Sommeijer). --csv: scheme,nodes,\n"
+    "              m,stages,order,symplectic,symmetric,error_constant,stability_interval,\n"
+    "              phase_lag_order,kind,stage_order,stability,dissipation_order with stability\n"
+    "              periodic|absolute|none (a-stable is for RK methods on y' = lambda y), interval\n"
+    "              inf, 0 (empty) or tau* to 30 digits, dissipation_order inf when det M = 1\n"
     "  --tableau   the exact tableau: node polynomial N and the matrices on Q[x]/(N) in the\n"
     "              monomial basis (or rationals), with 30-digit decimals of c, a, bbar, b\n"
     "  --scheme S  lpf (default), midpoint, trapezoidal or galerkin (Gauss quadrature, m = 1..8)\n"
     "  --nodes F   equispaced (default), gauss-interior, lobatto, chebyshev (also gauss_interior,\n"
-    "              gauss-lobatto, chebyshev-lobatto, ...), a comma list, or all (LPF only)\n"
-    "  --m M       degree 2..8 for lpf, 1..8 for galerkin; A..B or all (default 2)\n"
+    "              gauss-lobatto, chebyshev-lobatto, ...), a comma list, or all (lpf only)\n"
+    "  --m M       degree 2..8 for lpf, 1..8 for galerkin; A..B or all (default 2; not for\n"
+    "              midpoint and trapezoidal)\n"
     "  --csv       CSV output\n"
     "  --help      this text\n";
 
@@ -127,12 +137,19 @@ std::string stability_text(const linear_stability_result& r) {
   return digits30(sqrt(to_decimal(iv.low())));
 }
 
+/// "periodic", "absolute" or "none" (empty interval).
+std::string stability_kind_text(const linear_stability_result& r) {
+  if (linear_stability_interval(r).empty) return "none";
+  return r.determinant_is_one ? "periodic" : "absolute";
+}
+
 struct options {
   std::string mode = "two-step";
   std::string scheme = "lpf";
   std::vector<std::string> families = {"equispaced"};
   int m_first = 2, m_last = 2;
   bool m_given = false;
+  bool nodes_given = false;
   bool csv = false;
   std::string m_text = "2";
 };
@@ -171,7 +188,8 @@ int two_step(const options& o) {
 
 int analyse(const options& o) {
   if (o.csv)
-    std::cout << "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,stability_interval,phase_lag_order\n";
+    std::cout << "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,stability_interval,phase_lag_order,kind,"
+                 "stage_order,stability,dissipation_order\n";
   const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
   const std::vector<std::string> families = o.scheme == "lpf" ? o.families : std::vector<std::string>{"-"};
   for (const std::string& family : families)
@@ -182,36 +200,45 @@ int analyse(const options& o) {
       const symmetry_result sm = symmetry(t);
       const linear_stability_result ls = linear_stability(t);
       using std::sqrt;
-      const std::string error_constant = ord.order_is_lower_bound ? "-" : digits3(sqrt(to_decimal(ord.error_constant_squared)));
+      auto constant = [&](const exact_number& squared) {
+        return ord.order_is_lower_bound ? std::string("-") : digits3(sqrt(to_decimal(squared)));
+      };
+      const std::string error_constant = constant(ord.error_constant_squared);
+      const std::string dissipation = ls.determinant_is_one ? "inf" : std::to_string(ls.dissipation_order);
       const std::string order = std::to_string(ord.order) + (ord.order_is_lower_bound ? "+" : "");
       const std::string nodes_label = o.scheme == "lpf" ? family : (o.scheme == "galerkin" ? "gauss" : "-");
       const std::string m_label = single ? "-" : std::to_string(m);
       if (o.csv) {
         std::cout << o.scheme << "," << nodes_label << "," << m_label << "," << t.stages << "," << order << ","
                   << (sy.symplectic ? "yes" : "no") << "," << (sm.symmetric ? "yes" : "no") << "," << error_constant << ","
-                  << stability_text(ls) << "," << ls.phase_lag_order << "\n";
+                  << stability_text(ls) << "," << ls.phase_lag_order << ",rkn," << stage_order(t) << ","
+                  << stability_kind_text(ls) << "," << dissipation << "\n";
       } else {
         std::cout << o.scheme << " " << nodes_label << " m = " << m_label << ": " << t.stages << " stages, order " << order
                   << " (quadrature order " << quadrature_order(t) << ", " << ord.conditions_checked << " tree conditions, "
                   << ord.nonzero_defects << " nonzero at order " << ord.order + 1 << "), C = " << error_constant
-                  << ", C^2 = " << ord.error_constant_squared.str() << "\n"
+                  << ", C^2 = " << ord.error_constant_squared.str() << " (position C_q = "
+                  << constant(ord.position_error_constant_squared) << ", velocity C_p = "
+                  << constant(ord.velocity_error_constant_squared) << "); stage order " << stage_order(t) << "\n"
                   << "  symplectic: " << (sy.symplectic ? "yes" : "no") << " (bbar = b (1 - c): "
                   << (sy.first_condition ? "yes" : "no") << ", b_i (bbar_j - a_ij) = b_j (bbar_i - a_ji): "
                   << (sy.second_condition ? "yes" : "no") << "); symmetric: " << (sm.symmetric ? "yes" : "no") << "\n"
-                  << "  stability interval tau* = " << stability_text(ls) << "; phase-lag order " << ls.phase_lag_order
-                  << ", constant " << ls.phase_lag_constant.str() << "\n";
+                  << "  " << (ls.determinant_is_one ? "det M = 1, interval of periodicity" : "det M != 1, interval of absolute stability")
+                  << " tau* = " << stability_text(ls) << " (" << stability_kind_text(ls) << "); phase-lag order "
+                  << ls.phase_lag_order << ", constant " << ls.phase_lag_constant.str() << "; dissipation "
+                  << (ls.determinant_is_one ? std::string("none") : "order " + dissipation + ", constant " + ls.dissipation_constant.str())
+                  << "\n";
       }
     }
   return cli::finish_stdout("geomint-scheme");
 }
 
-int print_tableau(const options& o) {
-  const std::string& family = o.families.front();
-  const int m = o.m_first;
+void print_one_tableau(const options& o, const std::string& family, int m) {
   const exact_rkn_tableau t = tableau_of(o.scheme, family, m);
   const int s = t.stages;
-  std::cout << "scheme " << o.scheme << (o.scheme == "lpf" ? " " + family : std::string()) << " m = " << m << ", " << s
-            << " stages\n";
+  const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
+  std::cout << "scheme " << o.scheme << (o.scheme == "lpf" ? " " + family : std::string())
+            << (single ? std::string() : " m = " + std::to_string(m)) << ", " << s << " stages\n";
   if (t.basis == stage_basis::monomial) {
     std::cout << "stages: the roots of N(x) = ";
     for (int k = s; k >= 0; --k)
@@ -242,6 +269,13 @@ int print_tableau(const options& o) {
     std::cout << "\n  bbar = " << digits30(n.bbar[static_cast<std::size_t>(i)]) << ", b = " << digits30(n.b[static_cast<std::size_t>(i)])
               << "\n";
   }
+}
+
+int print_tableau(const options& o) {
+  const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
+  const std::vector<std::string> families = o.scheme == "lpf" ? o.families : std::vector<std::string>{"-"};
+  for (const std::string& family : families)
+    for (int m = o.m_first; m <= (single ? o.m_first : o.m_last); ++m) print_one_tableau(o, family, m);
   return cli::finish_stdout("geomint-scheme");
 }
 
@@ -254,20 +288,30 @@ int main(int argc, char** argv) {
   cl.toggle("--analyze", [&] { o.mode = "analyse"; });
   cl.toggle("--tableau", [&] { o.mode = "tableau"; });
   cl.toggle("--csv", [&] { o.csv = true; });
-  cl.toggle("--all", [&] { o.m_text = "all"; });
+  cl.toggle("--all", [&] {
+    o.m_text = "all";
+    o.m_given = true;
+  });
   cl.value("--scheme", [&](const std::string& v) {
     o.scheme = cli::parse_choice("--scheme", v, {"lpf", "midpoint", "trapezoidal", "galerkin"});
   });
-  cl.value("--nodes", [&](const std::string& v) { o.families = cli::parse_node_family_list("--nodes", v); });
+  cl.value("--nodes", [&](const std::string& v) {
+    o.families = cli::parse_node_family_list("--nodes", v);
+    o.nodes_given = true;
+  });
   cl.value("--m", [&](const std::string& v) { o.m_text = v; o.m_given = true; });
   if (const auto done = cl.parse(argc, argv)) return *done;
   try {
     const int lo = o.scheme == "galerkin" ? 1 : 2;
     const int hi = o.scheme == "galerkin" ? max_exact_stages : max_exact_m;
-    const auto range = cli::parse_integer_range<int>("--m", o.m_text, lo, hi, o.mode != "tableau");
+    if (o.m_given && (o.scheme == "midpoint" || o.scheme == "trapezoidal"))
+      throw cli::usage_error("--m does not apply to --scheme " + o.scheme + " (it has no degree; --m is for lpf and galerkin)");
+    if (o.nodes_given && o.scheme != "lpf")
+      throw cli::usage_error("--nodes does not apply to --scheme " + o.scheme + " (--nodes is for lpf only" +
+                             (o.scheme == "galerkin" ? "; galerkin uses the Gauss points)" : ")"));
+    const auto range = cli::parse_integer_range<int>("--m", o.m_text, lo, hi);
     o.m_first = range.first;
     o.m_last = range.second;
-    if (o.mode == "tableau" && o.families.size() != 1) throw cli::usage_error("--tableau takes one node family");
   } catch (const std::exception& e) {
     return cl.fail(e.what());
   }

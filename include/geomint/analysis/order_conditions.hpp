@@ -163,4 +163,22 @@ constexpr int quadrature_order(const exact_rkn_tableau& t, int limit = 2 * max_e
   return limit;
 }
 
+/// Stage order: the largest r such that the stages are exact for q'' = g(t) with g of degree
+/// r - 2, i.e. A c^k = c^(k+2) / ((k+1)(k+2)) for k = 0..r-2 (componentwise powers; the stage
+/// Q_i = q + c_i tau p + tau^2 sum_j a_ij g(c_j tau) then has a local error O(tau^(r+1))). At
+/// least 1 (Q_i = q + c_i tau p + O(tau^2)); s + 1 for an s-stage collocation method (checked up
+/// to `limit`).
+constexpr int stage_order(const exact_rkn_tableau& t, int limit = 2 * max_exact_stages + 2) {
+  stage_vector power = t.one;  // c^k
+  for (int k = 0; k + 2 <= limit; ++k) {
+    const stage_vector image = t.apply_a(power);
+    const stage_vector target = t.multiply_by_nodes(t.multiply_by_nodes(power));
+    const exact_number scale(rational(1, (k + 1) * (k + 2)));
+    for (int i = 0; i < t.stages; ++i)
+      if (!(image[i] == scale * target[i])) return k + 1;
+    power = t.multiply_by_nodes(power);
+  }
+  return limit;
+}
+
 }  // namespace geomint
