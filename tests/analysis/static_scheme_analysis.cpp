@@ -3,7 +3,9 @@
 /// evaluated by the compiler; a broken identity fails the build.
 ///
 /// Independent sources of the expected values:
-/// - tree counts: OEIS A001678 (lone-child-avoiding rooted trees with n + 2 vertices);
+/// - tree counts: the generating function of the special Nystrom trees (HNW I, section II.14:
+///   a fat root whose sons are meagre leaves or meagre vertices over a fat tree), counted by
+///   multisets of sons, independently of the generator's enumeration;
 /// - orders: collocation theory (an s-stage collocation method has the order of its quadrature,
 ///   Gauss: 2s; Hairer, Norsett, Wanner, Solving ODEs I, section II.7 and II.14), so LPF of
 ///   degree m on the Gauss interior nodes has order 2(m - 1), Galerkin (Gauss collocation with
@@ -20,13 +22,29 @@ namespace {
 
 using namespace geomint;
 
-// Tree counts by size (OEIS A001678 shifted by two), generated at compile time up to 14 here.
+// Tree counts by size against the generating function: with S_n the trees of size n and
+// B_k = [k = 1] + S_{k-1} the sons of size k (a meagre leaf, or a meagre vertex over a tree of
+// size k - 1), S_n is the number of multisets of sons of total size n - 1, the coefficient of
+// x^(n-1) in prod_k (1 - x^k)^(-B_k). Up to 14 vertices here: 1, 1, 2, 3, 6, 10, 20, 36, 72,
+// 137, 275, 541, 1098, 2208. (Not OEIS A001678, the series-reduced planted trees, which agrees for
+// trees of up to 6 vertices and then has 19 where there are 20 special Nystrom trees of 7.)
 constexpr bool tree_counts_match() {
-  constexpr int expected[] = {1, 1, 2, 3, 6, 10, 20, 36, 72, 137, 275, 541, 1098, 2208};
-  const nystrom_tree_table t = make_nystrom_trees(14);
-  for (int n = 1; n <= 14; ++n)
-    if (t.count(n) != expected[n - 1]) return false;
-  return true;
+  constexpr int n_max = 14;
+  std::int64_t trees[n_max + 1]{}, sons[n_max + 1]{};
+  trees[1] = 1;
+  for (int n = 2; n <= n_max; ++n) {
+    for (int k = 1; k < n; ++k) sons[k] = (k == 1 ? 1 : 0) + trees[k - 1];
+    std::int64_t multisets[n_max + 1]{};
+    multisets[0] = 1;
+    for (int k = 1; k < n; ++k)
+      for (std::int64_t copies = 0; copies < sons[k]; ++copies)  // times 1 / (1 - x^k)
+        for (int j = k; j < n; ++j) multisets[j] += multisets[j - k];
+    trees[n] = multisets[n - 1];
+  }
+  const nystrom_tree_table t = make_nystrom_trees(n_max);
+  for (int n = 1; n <= n_max; ++n)
+    if (t.count(n) != trees[n]) return false;
+  return trees[7] == 20 && trees[14] == 2208;
 }
 static_assert(tree_counts_match());
 // Densities and symmetries of the trees of size 3: f''(p, p) (gamma 3, sigma 2), f' f (gamma 6, sigma 1).

@@ -18,9 +18,12 @@
 /// distinct son types of (multiplicity)! sigma(son)^multiplicity enters the error coefficients.
 ///
 /// Number of trees with n vertices, n = 1, 2, ...: 1, 1, 2, 3, 6, 10, 20, 36, 72, 137, 275, 541,
-/// 1098, 2208, 4521, 9240, 19084: the number of lone-child-avoiding (series-reduced planted)
-/// rooted trees with n + 2 vertices, OEIS A001678 (contract every meagre vertex with its son and
-/// add a planted root), checked in tests/analysis/test_nystrom_trees.cpp.
+/// 1098, 2208, 4521, 9240, 19084: the coefficients of S(x) = x prod_k (1 - x^k)^(-B_k), B(x) =
+/// x + x S(x) (a fat root with a multiset of sons, each a meagre leaf or a meagre vertex over a
+/// tree), checked against that generating function in tests/analysis/static_scheme_analysis.cpp.
+/// (They are not OEIS A001678, the series-reduced planted trees: that sequence agrees for up to
+/// 6 vertices and then gives 19 where there are 20 trees of 7.) The number of order conditions
+/// of order q is the count for q (velocity) plus the count for q - 1 (position).
 ///
 /// Generation: a tree is u = u' + beta, the tree u' with one more son beta of the root, beta
 /// being the largest son (sons ordered: the meagre leaf first, then meagre-over-w by the index
