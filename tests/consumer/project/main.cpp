@@ -4,6 +4,10 @@
 
 constexpr auto D2 = geomint::differentiation_weights<2, geomint::equispaced, 2, geomint::rational>();
 static_assert(D2[1][1] == geomint::rational(-8));
+// An analysis beyond the compilers' default constant-evaluation budget: it compiles only with the
+// limit that geomint::geomint sets for its consumers (docs/guide/building.md). Gauss collocation
+// is symplectic, so det M = 1 on y'' = -y.
+static_assert(geomint::linear_stability(geomint::galerkin_tableau<8>()).determinant_is_one);
 
 int main() {
   const auto c = geomint::nodes<geomint::gauss_lobatto, 4, double>();
