@@ -25,7 +25,8 @@
 /// unit disk. With d = 1 (interval of periodicity): |t| <= 2, i.e. 2Q - P >= 0 and 2Q + P >= 0.
 /// Otherwise (interval of absolute stability, spectral radius <= 1; Jury's conditions for a real
 /// quadratic): d <= 1 and |t| <= 1 + d, i.e. D^2 - Dn >= 0, D^2 + Dn - Tn D >= 0 and
-/// D^2 + Dn + Tn D >= 0 (the factor D^2 > 0 does not change signs). Each condition polynomial F
+/// D^2 + Dn + Tn D >= 0 (the factor D^2 > 0 does not change signs; d >= -1 is the sum of the
+/// last two). Each condition polynomial F
 /// must be positive just right of z = 0 (else the interval is empty), and tau*^2 is the
 /// smallest positive root of odd multiplicity (a sign change) of any of them, infinite when
 /// there is none. Roots of even multiplicity inside are isolated points where a root of modulus 1
