@@ -137,14 +137,17 @@ static_assert(linear_stability(midpoint_tableau()).leading_coefficient == exact_
 static_assert(linear_stability(lpf_tableau<3, gauss_interior>()).order == 4 &&
               linear_stability(lpf_tableau<3, gauss_interior>()).determinant_is_one);
 
-// Stormer-Verlet: det M = 1, R = 2 - tau^2, interval of periodicity (0, 2) (HLW, Geometric
-// Numerical Integration, section I.5: stable for h omega < 2): z* = tau*^2 = 4 exactly.
+// Stormer-Verlet: det M = 1 and R = tr M = 2 - tau^2 (one step of y'' = -y by hand), so
+// |R| <= 2 exactly for tau <= 2: interval of periodicity (0, 2), z* = tau*^2 = 4.
 constexpr stability_interval verlet_interval = linear_stability_interval(linear_stability(trapezoidal_tableau()));
 static_assert(verlet_interval.kind == stability_kind::periodic && !verlet_interval.empty && !verlet_interval.unbounded);
 static_assert(verlet_interval.compare_squared(exact_number(4)) == 0);
 static_assert(verlet_interval.compare_squared(exact_number(rational(399, 100))) < 0);
-// The midpoint VI and Gauss collocation (Galerkin) are P-stable: R = (8 - 2z)/(4 + z) and the
-// diagonal Pade approximants of e^(i tau) have |R| <= 2 for every tau (HLW, section VI.4).
+// The midpoint VI and Gauss collocation (Galerkin) are P-stable: for the midpoint VI
+// R = (8 - 2z)/(4 + z) and -2 (4 + z) < 8 - 2z < 2 (4 + z) for every z > 0; Gauss collocation
+// applied to q' = p, p' = -q has the eigenvalues R(i tau), R(-i tau) of modulus 1 (its stability
+// function is a diagonal Pade approximant of e^z, R(-z) R(z) = 1: Hairer and Wanner, Solving
+// Ordinary Differential Equations II, chapter IV).
 static_assert(linear_stability_interval(linear_stability(midpoint_tableau())).unbounded);
 static_assert(linear_stability_interval(linear_stability(galerkin_tableau<2>())).unbounded);
 static_assert(linear_stability_interval(linear_stability(galerkin_tableau<3>())).unbounded);
