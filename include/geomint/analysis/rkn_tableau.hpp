@@ -358,9 +358,9 @@ inline constexpr bool dependent_false = false;
 }  // namespace analysis::detail
 
 /// One entry of a braced tableau list (`rational_rkn_tableau<S>({...}, ...)`): an exact rational
-/// or an integer. A std::array filled from a shorter braced list value-initialises the missing
-/// entries; here that default constructor is a static_assert, so that a left-out entry is a
-/// compile error and never a silent 0. (A longer list is a compile error of std::array itself.)
+/// or an integer. A std::array (a row of a) filled from a shorter braced list value-initialises
+/// the missing entries; here that default constructor is a static_assert, so that a left-out
+/// entry is a compile error and never a silent 0.
 struct tableau_entry {
   rational value;
   constexpr tableau_entry(const rational& v) : value(v) {}  // NOLINT(google-explicit-constructor)
@@ -376,20 +376,24 @@ struct tableau_entry {
   template <class Missing = void>
   constexpr tableau_entry() : value() {
     static_assert(analysis::detail::dependent_false<Missing>,
-                  "geomint::rational_rkn_tableau: a braced list is shorter than the number of stages S (c, bbar, b and every "
-                  "row of a need S entries, a needs S rows; a left-out entry would be a silent 0)");
+                  "geomint::rational_rkn_tableau<S>: a braced list is shorter than the number of stages S (every row of a "
+                  "needs S entries and a needs S rows; a left-out entry would be a silent 0)");
   }
 };
 
 /// The same with the number of stages given, for braced lists: `rational_rkn_tableau<2>({...}, ...)`.
-/// Every list must have exactly S entries (see tableau_entry).
-template <int S>
-constexpr exact_rkn_tableau rational_rkn_tableau(const std::array<tableau_entry, S>& c,
+/// Every list must have exactly S entries: the lengths of c, bbar and b are deduced and checked by
+/// static_asserts; a short row of a is caught by tableau_entry, a long one by std::array.
+template <int S, std::size_t NodeCount, std::size_t BbarCount, std::size_t BCount>
+constexpr exact_rkn_tableau rational_rkn_tableau(const tableau_entry (&c)[NodeCount],
                                                  const std::array<std::array<tableau_entry, S>, S>& a,
-                                                 const std::array<tableau_entry, S>& bbar, const std::array<tableau_entry, S>& b) {
+                                                 const tableau_entry (&bbar)[BbarCount], const tableau_entry (&b)[BCount]) {
+  static_assert(NodeCount == S, "geomint::rational_rkn_tableau<S>: the braced list c must have S entries (one node per stage)");
+  static_assert(BbarCount == S, "geomint::rational_rkn_tableau<S>: the braced list bbar must have S entries (one weight per stage)");
+  static_assert(BCount == S, "geomint::rational_rkn_tableau<S>: the braced list b must have S entries (one weight per stage)");
   std::array<rational, S> c_values{}, bbar_values{}, b_values{};
   std::array<std::array<rational, S>, S> a_values{};
-  for (std::size_t i = 0; i < S; ++i) {
+  for (std::size_t i = 0; i < S && i < NodeCount && i < BbarCount && i < BCount; ++i) {
     c_values[i] = c[i].value;
     bbar_values[i] = bbar[i].value;
     b_values[i] = b[i].value;
