@@ -16,7 +16,7 @@ mkdir -p "$out/core"
 # digits, m = 9..16, the zoo, the constrained systems of geomint-run) are stubs here. The tool
 # units at -O1 but geomint-beam, whose wall time is table 2; the examples as in the gcc preset
 # (tools/CMakeLists.txt).
-cmake --preset gcc -B "$build" -DGEOMINT_BUILD_TESTS=OFF -DGEOMINT_BUILD_DOCS=OFF -DGEOMINT_TOOLS_AT_O1=ON \
+cmake --preset gcc -B "$build" --no-warn-unused-cli -DGEOMINT_BUILD_TESTS=OFF -DGEOMINT_BUILD_DOCS=OFF -DGEOMINT_TOOLS_AT_O1=ON \
   "-DGEOMINT_TOOL_UNITS=geomint_stepper_builtin_16;geomint_stepper_builtin_50" >/dev/null
 cmake --build "$build" -j "$(nproc)" --target geomint-demo-programs
 

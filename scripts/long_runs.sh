@@ -39,7 +39,6 @@ progress() {
 measure() {
   local label=$1 n=$2
   shift 2
-  progress
   local out
   out=$( { /usr/bin/time -f 'TIME %e %M' "$@" > /tmp/long_runs_out.$$ ; } 2>&1 )
   local seconds rss
@@ -58,6 +57,7 @@ measure() {
 
 echo "| case | steps | seconds | ns/step | max RSS (kB) | energy |"
 echo "|---|---|---|---|---|---|"
+progress
 for n in "$small" "$steps"; do
   measure "LPF m=4 gauss-interior, pendulum, tau=0.1" "$n" "$run" --system pendulum --m 4 --nodes gauss-interior --tau 0.1 --steps "$n"
   measure "LPF m=2 equispaced, Kepler e=0.5, tau=0.01" "$n" "$run" --system kepler --m 2 --tau 0.01 --steps "$n"
