@@ -1,6 +1,6 @@
 /// LPF of degree m = 12 on Gauss-interior nodes (order 2m - 2 = 22) for the pendulum in double:
 /// theta0 = 1 at rest, tau = 0.5, 2000 steps (t = 1000); prints the largest energy error.
-/// Also a compile-time check: this program instantiates one m = 12 engine (docs/results/performance.md reports its
+/// Also a compile-time check: this program instantiates one m = 12 engine (docs/results/compile_time.md reports its
 /// compile time).
 #include <algorithm>
 #include <cmath>

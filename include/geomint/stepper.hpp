@@ -12,7 +12,7 @@
 /// trapezoidal: 65 schemes over 23 engines (the node families of one LPF method share its
 /// engine, `engine_stepper`); on a natural system also LPF's fixed-point form for m = 2..8
 /// (`lpf-fixed-point`, schemes/lpf_fixed_point.hpp: 7 more engines). That is some 30 s of GCC
-/// 12 CPU time per (Sys, T) (the 12 units of tools/common: 28-34 s each, docs/results/ci.md), so
+/// 12 CPU time per (Sys, T) (the 12 units of tools/common: 28-34 s each; scripts/compile_times.sh), so
 /// a program instantiates it once per (Sys, T): `extern template` where it is used, `template`
 /// in one source file (as tools/common/stepper_tu.cpp does).
 

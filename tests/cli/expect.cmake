@@ -2,6 +2,7 @@
 # EXPECT_REGEX.
 #   EXPECT_EXIT: zero | nonzero (any exit status but 0, never a signal) | a number (exactly it)
 #   STDOUT_FILE: optional; stdout goes there instead (e.g. /dev/full to test write failures)
+#   EXPECT_EMPTY_STDERR: optional; stderr must be empty
 # A command killed by a signal (crash, abort, sanitizer report with abort) fails every variant:
 # CMake then reports a text such as "Child aborted" instead of a number.
 if(STDOUT_FILE)
@@ -20,6 +21,9 @@ elseif(EXPECT_EXIT STREQUAL "nonzero" AND status EQUAL 0)
   message(FATAL_ERROR "expected a non-zero exit, got 0:\n${all}")
 elseif(EXPECT_EXIT MATCHES "^[0-9]+$" AND NOT status EQUAL EXPECT_EXIT)
   message(FATAL_ERROR "expected exit ${EXPECT_EXIT}, got ${status}:\n${all}")
+endif()
+if(EXPECT_EMPTY_STDERR AND NOT err STREQUAL "")
+  message(FATAL_ERROR "expected an empty stderr, got:\n${err}")
 endif()
 if(NOT all MATCHES "${EXPECT_REGEX}")
   message(FATAL_ERROR "output does not match '${EXPECT_REGEX}':\n${all}")

@@ -13,11 +13,13 @@
 namespace geomint::tools {
 
 #if GEOMINT_STEPPER_STUB
-/// The stub of a multiprecision unit in a build configured with GEOMINT_RUN_MULTIPRECISION=OFF.
+/// The stub of a unit left out of the build: a multiprecision unit with
+/// GEOMINT_RUN_MULTIPRECISION=OFF, or any unit not named in GEOMINT_TOOL_UNITS (CMakeLists.txt).
 template <class T>
 [[noreturn]] void not_compiled() {
-  throw std::invalid_argument(std::to_string(digits_of<T>()) +
-                              "-digit arithmetic is not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF)");
+  throw std::invalid_argument("these schemes in " + std::to_string(digits_of<T>()) +
+                              " digits are not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF or "
+                              "GEOMINT_TOOL_UNITS)");
 }
 #endif
 

@@ -74,9 +74,14 @@ int run_constrained_fb(const options& o) {
   const T energy0 = integrator.energy(s);
   T worst_energy(0), worst_constraint = integrator.violation(s);
   if (o.csv) constrained_row<T, n>(s.step, s.t, s.q, s.p, energy0, integrator.violation(s));
+  tools::progress bar("geomint-run", static_cast<std::size_t>(o.steps), "steps");
   for (long k = 0; k < o.steps; ++k) {
+    if (k % 4096 == 0) bar.set(static_cast<std::size_t>(k));  // (a terminal only)
     const step_status st = integrator.try_step(s);
-    if (!st) return report_failure(st);
+    if (!st) {
+      bar.finish();  // the message on a line of its own
+      return report_failure(st);
+    }
     using std::abs;
     const T energy = integrator.energy(s), violation = integrator.violation(s);
     if (abs(T(energy - energy0)) > worst_energy) worst_energy = abs(T(energy - energy0));
@@ -86,6 +91,7 @@ int run_constrained_fb(const options& o) {
       if (!cli::stdout_ok()) return cli::exit_output;  // reported by main (finish_stdout)
     }
   }
+  bar.finish();
   constrained_summary<T>(o, std::string(Sys::name), scheme::name(), tau, worst_energy, worst_constraint);
   return 0;
 }

@@ -16,10 +16,10 @@ namespace geomint::run {
 template <constrained_system System, int Digits>
 int run_constrained(const options& o) {
 #if GEOMINT_RUN_STUB
-  // Built with GEOMINT_RUN_MULTIPRECISION=OFF: this scalar type is not compiled in.
+  // Left out of the build: GEOMINT_RUN_MULTIPRECISION=OFF, or not in GEOMINT_TOOL_UNITS.
   (void)o;
-  std::cerr << "geomint-run: --digits " << Digits
-            << " is not compiled into this build (configured with GEOMINT_RUN_MULTIPRECISION=OFF)\n";
+  std::cerr << "geomint-run: this constrained system in --digits " << Digits
+            << " is not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF or GEOMINT_TOOL_UNITS)\n";
   return 2;
 #else
   using T = tools::scalar_for_digits<Digits>;

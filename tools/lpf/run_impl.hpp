@@ -17,6 +17,7 @@
 
 #include "cli.hpp"
 #include "energy_growth.hpp"
+#include "progress.hpp"
 #include "run.hpp"
 #include "stepper.hpp"
 
@@ -110,11 +111,16 @@ int run_free_system(const options& o) {
   // cpu_seconds=X so that outside tools can time a run without the process start-up.
   timespec cpu_start{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu_start);
+  tools::progress bar("geomint-run", static_cast<std::size_t>(o.steps), "steps");
   for (long k = 0; k < o.steps; ++k) {
+    if (k % 4096 == 0) bar.set(static_cast<std::size_t>(k));  // (a terminal only)
     step_status st = o.compensated ? stepper->try_step_compensated(q, p, q_carry, p_carry, tau, q1, p1, opt)
                                    : stepper->try_step(q, p, tau, q1, p1, opt);
     st.step = step;
-    if (!st) return report_failure(st);
+    if (!st) {
+      bar.finish();  // the message on a line of its own
+      return report_failure(st);
+    }
     q = q1;
     p = p1;
     ++step;
@@ -128,6 +134,7 @@ int run_free_system(const options& o) {
       if (!cli::stdout_ok()) return cli::exit_output;  // reported by main (finish_stdout)
     }
   }
+  bar.finish();
   timespec cpu_end{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu_end);
   std::cerr << "cpu_seconds="

@@ -21,6 +21,7 @@
 #include "geomint/integrator.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/schemes/lpf_fixed_point.hpp"
+#include "progress.hpp"
 
 namespace {
 
@@ -44,7 +45,8 @@ struct result {
 };
 
 template <class Scheme, class Sys>
-result measure(const std::string& name, bool compensated, long steps, int trajectories, double tau) {
+result measure(const std::string& name, bool compensated, long steps, int trajectories, double tau,
+               geomint::tools::progress& bar) {
   result r;
   r.name = name + (compensated ? ", compensated" : ", plain");
   for (int k = 0; k < trajectories; ++k) {
@@ -64,6 +66,7 @@ result measure(const std::string& name, bool compensated, long steps, int trajec
       const double dE = std::abs(I.energy(s) - E0);
       r.max_error = std::max(r.max_error, dE);
       r.growth.add(step, dE);
+      if (step % 4096 == 0) bar.advance(4096);  // (a terminal only; not per step: the step is timed)
     }
     r.cpu_seconds += static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     r.steps += steps;
@@ -75,9 +78,10 @@ template <class Sys>
 std::vector<result> run_all(long steps, int trajectories, double tau) {
   using namespace geomint;
   std::vector<result> all;
+  tools::progress bar("geomint-brouwer", static_cast<std::size_t>(4 * trajectories * steps), "steps");
   for (bool compensated : {false, true}) {
-    all.push_back(measure<lpf<8, gauss_interior>, Sys>("lpf m = 8, Newton form", compensated, steps, trajectories, tau));
-    all.push_back(measure<lpf_fixed_point<8>, Sys>("lpf m = 8, fixed-point form", compensated, steps, trajectories, tau));
+    all.push_back(measure<lpf<8, gauss_interior>, Sys>("lpf m = 8, Newton form", compensated, steps, trajectories, tau, bar));
+    all.push_back(measure<lpf_fixed_point<8>, Sys>("lpf m = 8, fixed-point form", compensated, steps, trajectories, tau, bar));
   }
   return all;
 }

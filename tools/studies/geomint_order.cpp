@@ -217,7 +217,7 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
     } catch (const std::exception& e) {
       results[i].failure = e.what();
     }
-  });
+  }, "geomint-order");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int status = 0;
   const int scheme_w = geomint::studies::scheme_column_width(cases);

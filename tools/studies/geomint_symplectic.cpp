@@ -145,7 +145,7 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
     } catch (const std::exception& e) {
       rows[i].failure = e.what();
     }
-  });
+  }, "geomint-symplectic");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int status = 0;
   const int scheme_w = geomint::studies::scheme_column_width(cases);

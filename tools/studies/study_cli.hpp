@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "progress.hpp"
 #include "stepper.hpp"
 
 namespace geomint::studies {
@@ -99,9 +100,11 @@ inline int scheme_column_width(const std::vector<study_case>& cases) {
 /// The m column of the tables ("-" for midpoint and trapezoidal).
 inline std::string m_label(const scheme_spec& s) { return s.has_m() ? std::to_string(s.m) : "-"; }
 
-/// Runs job(i) for i in [0, count) on `threads` threads (each job owns its own stepper).
+/// Runs job(i) for i in [0, count) on `threads` threads (each job owns its own stepper), with
+/// the progress line of `tool` on a terminal (progress.hpp).
 template <class Job>
-void parallel_for(std::size_t count, unsigned threads, Job&& job) {
+void parallel_for(std::size_t count, unsigned threads, Job&& job, const char* tool) {
+  tools::progress bar(tool, count, "runs");
   std::vector<std::thread> pool;
   std::size_t next = 0;
   std::mutex lock;
@@ -114,6 +117,7 @@ void parallel_for(std::size_t count, unsigned threads, Job&& job) {
         i = next++;
       }
       job(i);
+      bar.advance();
     }
   };
   for (unsigned t = 0; t < std::max(1u, threads); ++t) pool.emplace_back(worker);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "methods.hpp"
+#include "progress.hpp"
 
 namespace geomint::workprecision {
 
@@ -152,6 +153,7 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
   }
   const std::string scalar = g.digits == 16 ? "double" : "cpp_bin_float_50";
   std::map<std::string, std::vector<result>> by_method;
+  tools::progress bar("geomint-workprecision", all.size() * static_cast<std::size_t>(o.passes), "ladders");
   for (const auto& m : all) {
     long knob = m.first;
     double prev_error = std::numeric_limits<double>::infinity();
@@ -177,15 +179,19 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
       if (m.kind == knob_kind::tolerance) ++knob;  // tolerance / 10^(1/4)
       else knob = std::max(knob + 1, std::lround(double(knob) * std::pow(2.0, 0.25)));
     }
+    bar.advance();  // (a terminal only)
   }
   // The further timing passes: every run again, the fastest time kept.
   for (int pass = 2; pass <= o.passes; ++pass)
-    for (const auto& m : all)
+    for (const auto& m : all) {
       for (result& r : by_method[m.name]) {
         arr<T, P::n> q{}, p{};
         long steps = 0;
         if (const auto best = fastest_run<P, T>(m, r.knob, t_end, q, p, steps)) r.cpu = std::min(r.cpu, *best);
       }
+      bar.advance();
+    }
+  bar.finish();
   if (o.csv) std::cout << "method,tau,steps,cpu_seconds,final_error,max_energy_error\n";
   else
     std::cout << "system " << P::name << ", T = " << t_end_d << ", " << scalar
