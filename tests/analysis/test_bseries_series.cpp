@@ -8,44 +8,18 @@
 /// (HLW), section II.2 (the Lobatto IIIA-IIIB pairs: Stormer-Verlet for s = 2 (order 2),
 /// order 4 for s = 3; symplectic Euler, order 1)), and elementary weights computed by hand
 /// from the tableau (HLW section III.1: Phi(t) = b^T (prod of A g(subtrees))).
-#include <boost/multiprecision/cpp_int.hpp>
 #include <stdexcept>
 #include <vector>
 
 #include "catch.hpp"
+#include "bseries_methods.hpp"
 #include "geomint/analysis/bseries/series.hpp"
 
+// Own namespace: the suites of tests/analysis are compiled as one unity unit.
 namespace bseries_series_test {
 
-using Q = boost::multiprecision::cpp_rational;
+using namespace bseries_test_methods;
 using namespace geomint::analysis::bseries;
-
-Q q(int p, int r = 1) { return Q(p) / Q(r); }
-
-rk_tableau<Q> explicit_euler() { return {{q(0)}, {{q(0)}}, {q(1)}}; }
-rk_tableau<Q> implicit_midpoint() { return {{q(1, 2)}, {{q(1, 2)}}, {q(1)}}; }
-rk_tableau<Q> classical_rk4() {
-  return {{q(0), q(1, 2), q(1, 2), q(1)},
-          {{q(0), q(0), q(0), q(0)}, {q(1, 2), q(0), q(0), q(0)}, {q(0), q(1, 2), q(0), q(0)}, {q(0), q(0), q(1), q(0)}},
-          {q(1, 6), q(1, 3), q(1, 3), q(1, 6)}};
-}
-rk_tableau<Q> radau_iia_2() { return {{q(1, 3), q(1)}, {{q(5, 12), q(-1, 12)}, {q(3, 4), q(1, 4)}}, {q(3, 4), q(1, 4)}}; }
-rk_tableau<Q> lobatto_iiia_3() {
-  return {{q(0), q(1, 2), q(1)},
-          {{q(0), q(0), q(0)}, {q(5, 24), q(1, 3), q(-1, 24)}, {q(1, 6), q(2, 3), q(1, 6)}},
-          {q(1, 6), q(2, 3), q(1, 6)}};
-}
-rk_tableau<Q> lobatto_iiib_3() {
-  return {{q(0), q(1, 2), q(1)},
-          {{q(1, 6), q(-1, 6), q(0)}, {q(1, 6), q(1, 3), q(0)}, {q(1, 6), q(5, 6), q(0)}},
-          {q(1, 6), q(2, 3), q(1, 6)}};
-}
-rk_tableau<Q> lobatto_iiia_2() { return {{q(0), q(1)}, {{q(0), q(0)}, {q(1, 2), q(1, 2)}}, {q(1, 2), q(1, 2)}}; }
-rk_tableau<Q> lobatto_iiib_2() { return {{q(0), q(1)}, {{q(1, 2), q(0)}, {q(1, 2), q(0)}}, {q(1, 2), q(1, 2)}}; }
-
-}  // namespace bseries_series_test
-
-using namespace bseries_series_test;
 
 TEST_CASE("bseries series: orders of Runge-Kutta methods from their elementary weights", "[bseries]") {
   const tree_set trees(6, 1);
@@ -121,3 +95,5 @@ TEST_CASE("bseries series: bad tableaux and tree sets are refused with a reason"
   CHECK_THROWS_AS(elementary_weights(two, prk_tableau<Q>{lobatto_iiia_2(), explicit_euler()}), std::invalid_argument);
   CHECK_THROWS_AS(local_error_coefficients(one, std::vector<Q>(2)), std::invalid_argument);
 }
+
+}  // namespace bseries_series_test

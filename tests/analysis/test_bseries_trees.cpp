@@ -15,6 +15,9 @@
 #include "catch.hpp"
 #include "geomint/analysis/bseries/trees.hpp"
 
+// Own namespace: the suites of tests/analysis are compiled as one unity unit.
+namespace bseries_trees_test {
+
 using geomint::analysis::bseries::tree_set;
 
 TEST_CASE("bseries trees: counts per order match OEIS A000081 and A000151", "[bseries]") {
@@ -122,3 +125,5 @@ TEST_CASE("bseries trees: bad requests are refused with a reason", "[bseries]") 
   CHECK_THROWS_AS(tree_set(10, 2), std::invalid_argument);
   CHECK_THROWS_AS(tree_set(3, 3), std::invalid_argument);
 }
+
+}  // namespace bseries_trees_test
