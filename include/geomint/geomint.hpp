@@ -2,6 +2,7 @@
 /// Umbrella header: every public header of geomint, module by module (docs/design.md).
 
 // core: exact arithmetic, polynomials, nodes, bases, differentiation weights, quadrature
+#include "geomint/core/checked_cast.hpp"
 #include "geomint/core/rational.hpp"
 #include "geomint/core/big_integer.hpp"
 #include "geomint/core/big_rational.hpp"

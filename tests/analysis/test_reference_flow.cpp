@@ -1,6 +1,9 @@
 /// The Taylor-series reference flow against closed-form solutions and against the library's
 /// own Euler-Lagrange acceleration.
+#include <boost/math/constants/constants.hpp>
+
 #include "catch.hpp"
+#include "geomint/analysis/any_system.hpp"
 #include "geomint/analysis/reference_flow.hpp"
 #include "scalar_types.hpp"
 
@@ -118,4 +121,56 @@ TEST_CASE("reference flow: energy is conserved to working precision", "[analysis
   const T E1 = energy_qv<systems::charged, T>(systems::charged{}, flow.q(), flow.qdot());
   CHECK(geomint::test::abs_diff(E0, E1) <= geomint::test::eps_tol<T>(1024));
   CHECK_THROWS_AS(flow.advance_to(T(1)), std::invalid_argument);  // backwards
+}
+
+TEST_CASE("reference flow: bounded up front, never a hang", "[analysis][reference][limits]") {
+  using T = double;
+  // The harmonic oscillator's Taylor steps are about 0.3 to 1 long (order ~20 in double): 1e300
+  // needs ~1e300 steps, far beyond any bound. Refused before the first step.
+  analysis::reference_flow<systems::harmonic, T> flow(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
+  CHECK_THROWS_AS(flow.advance_to(T(1e300)), std::length_error);
+  CHECK(flow.steps() == 0);
+  CHECK(flow.time() == T(0));
+  CHECK_THROWS_AS(flow.advance_to(T(100), 10), std::length_error);  // a stated bound of 10 steps
+  // advance_toward: at most the given steps, the state valid between calls.
+  CHECK_FALSE(flow.advance_toward(T(100), 3));
+  CHECK(flow.steps() == 3);
+  CHECK(flow.time() > T(0));
+  while (!flow.advance_toward(T(100), 50)) {
+  }
+  CHECK(flow.time() == T(100));
+  using std::cos;
+  CHECK(geomint::test::abs_diff(flow.q()[0], T(cos(T(100)))) <= geomint::test::eps_tol<T>(1024));
+}
+
+TEMPLATE_TEST_CASE("reference flow: a collision stops with t + h == t, not a loop", "[analysis][reference][limits]", double,
+                   cpp_bin_float_50) {
+  using T = TestType;
+  // Radial Kepler fall from rest at r = 1 (mu = 1): collision at t_c = pi / (2 sqrt 2) (the
+  // free-fall time, a half period of the degenerate ellipse with a = 1/2). The Taylor steps
+  // shrink with the distance to the collision until t + h == t.
+  vec<T, 2> q0, p0;
+  q0 << T(1), T(0);
+  p0 << T(0), T(0);
+  analysis::reference_flow<systems::kepler, T> flow(q0, p0);
+  CHECK_THROWS_WITH(flow.advance_to(T(2)), Catch::Contains("(t + h == t)"));
+  using std::abs;
+  using std::sqrt;
+  const T t_c = boost::math::constants::pi<T>() / (T(2) * sqrt(T(2)));
+  CHECK(abs(T(flow.time() - t_c)) < T(1) / T(1000));  // stopped at the collision
+  CHECK(flow.steps() < 100000);
+}
+
+TEST_CASE("galerkin_reference: times beyond its step counts are refused, t = 0 is the start", "[analysis][reference][limits]") {
+  using T = double;
+  const vec<T, 1> q0(T(1)), p0(T(0));
+  const auto flow = analysis::galerkin_reference<systems::harmonic, T>(systems::harmonic{}, q0, p0);
+  analysis::dynamic_vector<T> q, p;
+  // 8 steps per unit time, refined 2^20 times: 1e19 would need 8e19 * 2^20 steps (no long holds them).
+  CHECK_THROWS_AS(flow(T(1e19), q, p), std::out_of_range);
+  CHECK_THROWS_AS(flow(std::numeric_limits<T>::quiet_NaN(), q, p), std::domain_error);
+  CHECK_THROWS_AS(flow(T(-1), q, p), std::domain_error);
+  flow(T(0), q, p);
+  CHECK(q[0] == T(1));
+  CHECK(p[0] == T(0));
 }

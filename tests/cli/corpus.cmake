@@ -126,3 +126,85 @@ geomint_cli_corpus(geomint-scheme "--m does not apply to --scheme trapezoidal" -
 geomint_cli_corpus(geomint-scheme "--m does not apply to --scheme midpoint" --scheme midpoint --all)
 geomint_cli_corpus(geomint-scheme "--nodes does not apply to --scheme galerkin" --scheme galerkin --nodes lobatto --m 2)
 geomint_cli_corpus(geomint-scheme "--nodes does not apply to --scheme trapezoidal" --tableau --scheme trapezoidal --nodes all)
+
+# Every flag of every tool: a value flag without its value and with an empty value after '=', a
+# switch with a value. geomint_cli_corpus_flag(<tool> <flag> <case> <regex> <args...>) names the
+# entry after the tool, the flag and the case.
+function(geomint_cli_corpus_flag tool flag case flag_regex)
+  string(REGEX REPLACE "[^A-Za-z0-9]+" "_" _name "${tool}${flag}_${case}")
+  geomint_cli_test(geomint_cli_corpus_${_name} 2 "${flag_regex}.*usage: ${tool}" $<TARGET_FILE:${tool}> ${ARGN})
+  set_tests_properties(geomint_cli_corpus_${_name} PROPERTIES TIMEOUT 30 LABELS cli_corpus)
+endfunction()
+set(_study_values --system --scheme --nodes --m --digits --threads)
+set(_values_geomint-run --system --scheme --nodes --basis --m --digits --tau --steps --every --q0 --p0)
+set(_switches_geomint-run --csv --no-monitor --compensated --growth)
+set(_values_geomint-order ${_study_values} --t-end --steps)
+set(_switches_geomint-order --csv --no-monitor)
+set(_values_geomint-symplectic ${_study_values} --tau --long-tau --long-steps --q0 --p0)
+set(_switches_geomint-symplectic --csv --no-monitor)
+set(_values_geomint-brouwer --system --steps --trajectories --tau)
+set(_switches_geomint-brouwer --windows)
+set(_values_geomint-scheme --scheme --nodes --m)
+set(_switches_geomint-scheme --analyse --analyze --tableau --csv --all)
+set(_values_geomint-beam --steps --dt --nodes --scheme --every --csv --centreline --snapshots --drift --cayley --reconstruction)
+set(_switches_geomint-beam)
+set(_values_geomint-workprecision --system --digits --t-end --max-seconds --methods --passes)
+set(_switches_geomint-workprecision --csv --plain-summation)
+foreach(tool geomint-run geomint-order geomint-symplectic geomint-brouwer geomint-scheme geomint-beam geomint-workprecision)
+  foreach(flag ${_values_${tool}})
+    geomint_cli_corpus_flag(${tool} ${flag} missing "${flag} needs a value" ${flag})
+    geomint_cli_corpus_flag(${tool} ${flag} empty "${flag} needs a non-empty value" ${flag}=)
+  endforeach()
+  foreach(flag ${_switches_${tool}})
+    geomint_cli_corpus_flag(${tool} ${flag} valued "${flag} takes no value, got 'x'" ${flag}=x)
+  endforeach()
+endforeach()
+
+# A bad value for each flag the blocks above leave out.
+geomint_cli_corpus_flag(geomint-run --basis bad "--basis must be one of" --basis chebyshev)
+geomint_cli_corpus_flag(geomint-run --nodes bad "--nodes must be one of" --nodes moon)
+geomint_cli_corpus_flag(geomint-run --p0 range "--p0 is out of range" --p0 1e400)
+geomint_cli_corpus_flag(geomint-run --every range "--every is out of range" --every 99999999999999999999)
+geomint_cli_corpus_flag(geomint-order --nodes bad "--nodes must be one of" --nodes moon)
+geomint_cli_corpus_flag(geomint-order --threads range "--threads is out of range" --threads 65)
+geomint_cli_corpus_flag(geomint-order --t-end range "--t-end is out of range" --t-end 1e400)
+geomint_cli_corpus_flag(geomint-symplectic --p0 bad "--p0 expects a finite number" --p0 abc)
+geomint_cli_corpus_flag(geomint-symplectic --scheme bad "--scheme must be one of" --scheme rk4)
+geomint_cli_corpus_flag(geomint-symplectic --nodes bad "--nodes must be one of" --nodes moon)
+geomint_cli_corpus_flag(geomint-symplectic --digits bad "--digits must be one of" --digits 15)
+geomint_cli_corpus_flag(geomint-symplectic --threads range "--threads is out of range" --threads 0)
+geomint_cli_corpus_flag(geomint-symplectic --system bad "--system must be one of" --system moon)
+geomint_cli_corpus_flag(geomint-brouwer --steps zero "--steps is out of range" --steps 0)
+geomint_cli_corpus_flag(geomint-brouwer --steps range "--steps is out of range" --steps 1000000001)
+geomint_cli_corpus_flag(geomint-brouwer --trajectories range "--trajectories is out of range" --trajectories 65)
+geomint_cli_corpus_flag(geomint-brouwer --tau zero "--tau must be a finite number > 0" --tau 0)
+geomint_cli_corpus_flag(geomint-brouwer --tau range "--tau is out of range" --tau 1e-400)
+geomint_cli_corpus_flag(geomint-scheme --scheme bad "--scheme must be one of" --scheme rk4)
+geomint_cli_corpus_flag(geomint-scheme --m range "--m range '5..3' is empty" --m 5..3)
+geomint_cli_corpus_flag(geomint-scheme --tableau families "--tableau takes one node family" --tableau --nodes equispaced,gauss-lobatto --m 3)
+geomint_cli_corpus_flag(geomint-beam --cayley bad "--cayley must be one of previous, current, midpoint" --cayley next)
+geomint_cli_corpus_flag(geomint-beam --reconstruction bad "--reconstruction must be one of per-node, strain" --reconstruction x)
+geomint_cli_corpus_flag(geomint-beam --snapshots range "--snapshots is out of range" --snapshots 10001)
+geomint_cli_corpus_flag(geomint-workprecision --methods empty_item "--methods has an empty item" --methods a,,b)
+geomint_cli_corpus_flag(geomint-workprecision --passes range "--passes is out of range" --passes 11)
+geomint_cli_corpus_flag(geomint-workprecision --max-seconds range "--max-seconds is out of range" --max-seconds 1e400)
+geomint_cli_corpus_flag(geomint-workprecision --system bad "--system must be one of" --system moon)
+
+# Two outputs to one file: a usage error naming both flags (the rows would interleave).
+geomint_cli_corpus_flag(geomint-beam --csv same_file "--csv and --drift name the same file 'F'" --steps 1 --csv F --drift F)
+geomint_cli_corpus_flag(geomint-beam --centreline same_file "--csv and --centreline name the same file" --steps 1 --csv F --centreline ./F)
+geomint_cli_corpus_flag(geomint-beam --drift same_stdout "--csv and --drift name the same file '-'" --steps 1 --drift - --csv -)
+
+# Runs that could not finish (they used to hang): refused at parse time, or stopped within
+# seconds with a message; the TIMEOUT turns a regression into a failure instead of a hang.
+geomint_cli_corpus_flag(geomint-workprecision --t-end taylor_1e300 "--t-end is out of range: '1e300' .expected T <= 10.6"
+                        --t-end 1e300 --methods taylor-series)
+geomint_cli_test(geomint_cli_bounds_workprecision_budget any
+                 "taylor-series at knob 0: stopped after 1.0* CPU seconds .--max-seconds."
+                 $<TARGET_FILE:geomint-workprecision> --t-end 1000000 --methods taylor-series --max-seconds 0.1 --passes 1)
+set_tests_properties(geomint_cli_bounds_workprecision_budget PROPERTIES TIMEOUT 60 LABELS cli_corpus)
+if(GEOMINT_RUN_MULTIPRECISION)  # geomint-order computes in 50 digits by default
+  geomint_cli_test(geomint_cli_bounds_order_t_end nonzero "reference_flow: t_end - t = 1e.300 needs about .* Taylor steps, more than the bound 100000000"
+                   $<TARGET_FILE:geomint-order> --t-end 1e300)
+  set_tests_properties(geomint_cli_bounds_order_t_end PROPERTIES TIMEOUT 60 LABELS cli_corpus)
+endif()

@@ -1,6 +1,7 @@
 # cmake -P: runs COMMAND (a ;-list), checks its exit status and that stdout + stderr match
 # EXPECT_REGEX.
-#   EXPECT_EXIT: zero | nonzero (any exit status but 0, never a signal) | a number (exactly it)
+#   EXPECT_EXIT: zero | nonzero (any exit status but 0, never a signal) | any (any exit status,
+#                never a signal) | a number (exactly it)
 #   STDOUT_FILE: optional; stdout goes there instead (e.g. /dev/full to test write failures)
 #   EXPECT_EMPTY_STDERR: optional; stderr must be empty
 # A command killed by a signal (crash, abort, sanitizer report with abort) fails every variant:

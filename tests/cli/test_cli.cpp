@@ -3,20 +3,25 @@
 /// Expected values: the integers and reals below are written in the tests as literals and their
 /// exact values are known by construction (e.g. 2^63 - 1 = 9223372036854775807 is the largest
 /// long long, 1e-320 lies below DBL_MIN = 2.2250738585072014e-308, the IEEE 754 binary64 limit);
-/// the CSV truncation test derives its expectation from the rows it wrote and the file-size limit
-/// it set (POSIX setrlimit(RLIMIT_FSIZE)).
+/// the CSV failure test derives its expectation from the file's previous content and the
+/// file-size limit it set (POSIX setrlimit(RLIMIT_FSIZE)); the reasons are strerror's texts.
 #include "cli.hpp"
 
+#include <chrono>
 #include <csignal>
+#include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 
 #include "catch.hpp"
+#include "cli_fuzz_parser.hpp"
 
 namespace cli = geomint::cli;
 
@@ -47,6 +52,14 @@ std::string error_of(F f) {
 }
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+/// The number of temporary files `<path>.tmp.*` of csv_file left in the current directory.
+int temporary_files(const std::string& path) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator("."))
+    if (entry.path().filename().string().rfind(path + ".tmp.", 0) == 0) ++count;
+  return count;
+}
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -218,9 +231,9 @@ TEST_CASE("cli: csv_file writes whole rows and reports failures", "[cli]") {
   }
 
   // A write cut short by the file-size limit (in a child, so the limit does not outlive the
-  // test): 100 rows of 11 bytes ("row,1000,z\n") against a limit of 255 bytes; the kernel writes
-  // the first 255 bytes, and the file must be cut back to the floor(255 / 11) = 23 complete rows
-  // (253 bytes) that fit, the last one being row 1022.
+  // test): 100 rows of 11 bytes against a limit of 255 bytes. The rows go to a temporary file,
+  // so the target keeps its previous content ("a,b\n1,2\n", written above), the failure is
+  // reported by close(), and no temporary file is left behind.
   const pid_t child = fork();
   REQUIRE(child >= 0);
   if (child == 0) {
@@ -230,16 +243,154 @@ TEST_CASE("cli: csv_file writes whole rows and reports failures", "[cli]") {
     cli::csv_file f;
     if (!f.open(path)) _exit(11);
     for (int i = 0; i < 100; ++i) f.row("row," + std::to_string(1000 + i) + ",z");  // "row,1000,z\n" = 11 bytes
-    _exit(f.close() ? 12 : 0);
+    if (f.close()) _exit(12);
+    _exit(f.error().find("File too large") != std::string::npos ? 0 : 13);  // EFBIG's text names the reason
   }
   int status = 0;
   REQUIRE(waitpid(child, &status, 0) == child);
   REQUIRE(WIFEXITED(status));
-  CHECK(WEXITSTATUS(status) == 0);  // close() reported the failure
-  const std::string text = read_file(path);
-  CHECK(text.size() == 253);
-  REQUIRE(!text.empty());
-  CHECK(text.back() == '\n');
-  CHECK(text.substr(242) == "row,1022,z\n");
+  CHECK(WEXITSTATUS(status) == 0);  // close() reported the failure with its reason
+  CHECK(read_file(path) == "a,b\n1,2\n");
+  CHECK(temporary_files(path) == 0);
   std::remove(path.c_str());
+}
+
+TEST_CASE("cli: csv_file is atomic: a reader sees the old file or the whole new one", "[cli]") {
+  const std::string path = "geomint_test_cli_atomic.csv";
+  {
+    cli::csv_file f;
+    REQUIRE(f.open(path));
+    f.row("old");
+    REQUIRE(f.close());
+  }
+  // Two writers of the same path at once, rows interleaved: each writes its own temporary file;
+  // the last close wins, whole.
+  cli::csv_file a, b;
+  REQUIRE(a.open(path));
+  REQUIRE(b.open(path));
+  for (int i = 0; i < 5000; ++i) {  // more than one block (64 KiB) each
+    a.row("a," + std::to_string(i) + ",aaaaaaaaaaaa");
+    b.row("b," + std::to_string(i) + ",bbbbbbbbbbbb");
+  }
+  CHECK(read_file(path) == "old\n");  // nothing visible before close
+  std::string expected_b;
+  for (int i = 0; i < 5000; ++i) expected_b += "b," + std::to_string(i) + ",bbbbbbbbbbbb\n";
+  REQUIRE(a.close());
+  REQUIRE(b.close());
+  CHECK(read_file(path) == expected_b);
+  CHECK(temporary_files(path) == 0);
+  // A directory is refused with its reason; the directory is untouched.
+  cli::csv_file dir;
+  CHECK_FALSE(dir.open("."));
+  CHECK(contains(dir.error(), "Is a directory"));
+  std::remove(path.c_str());
+}
+
+TEST_CASE("cli: two outputs naming the same file are a usage error naming both flags", "[cli]") {
+  std::string csv, drift, centreline;
+  // A fresh parser (and empty paths) per command line.
+  auto error = [&](std::vector<std::string> args) {
+    csv.clear();
+    drift.clear();
+    centreline.clear();
+    cli::parser p("prog", "usage");
+    p.output("--csv", csv).output("--drift", drift).output("--centreline", centreline);
+    return parse_error(p, std::move(args));
+  };
+  CHECK(error({"--csv", "F", "--drift", "F"}) == "--csv and --drift name the same file 'F' (each output needs a file of its own)");
+  CHECK(contains(error({"--csv", "F", "--centreline", "./F"}), "--csv and --centreline name the same file"));
+  CHECK(contains(error({"--csv", "d/../F", "--drift", "F"}), "--csv and --drift name the same file"));
+  CHECK(contains(error({"--drift", "-", "--csv", "-"}), "--csv and --drift name the same file '-'"));
+  CHECK(error({"--csv", "F", "--drift", "G", "--centreline", "-"}).empty());
+  CHECK(csv == "F");
+  CHECK(drift == "G");
+  CHECK(centreline == "-");
+}
+
+TEST_CASE("cli: a failed write to standard output names its reason", "[cli]") {
+  std::ifstream probe("/dev/full");
+  if (!probe) return;  // /dev/full is Linux's
+  // In a child: standard output on /dev/full (ENOSPC on every write), stderr to a file.
+  const std::string err_path = "geomint_test_cli_stderr.txt";
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    const int full = ::open("/dev/full", O_WRONLY);
+    const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (full < 0 || err < 0 || ::dup2(full, STDOUT_FILENO) < 0 || ::dup2(err, STDERR_FILENO) < 0) _exit(10);
+    cli::use_checked_stdout();
+    for (int i = 0; i < 10000; ++i) std::cout << "row " << i << '\n';
+    const bool stopped = !cli::stdout_ok();
+    _exit(cli::finish_stdout("prog") == cli::exit_output && stopped ? 0 : 11);
+  }
+  int status = 0;
+  REQUIRE(waitpid(child, &status, 0) == child);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(read_file(err_path) == "prog: cannot write to standard output: No space left on device\n");
+  std::remove(err_path.c_str());
+}
+
+TEST_CASE("cli: random command lines are accepted or refused, nothing else", "[cli][fuzz]") {
+  // A bounded randomised run of the fuzz target's contract (cli_fuzz_parser.hpp): argument
+  // vectors built from the flag names, near-miss names, '=' forms and values at and beyond the
+  // limits (huge and tiny numbers, signs, lists, control bytes). At most 2 s or 200000 vectors.
+  namespace fz = geomint::cli_fuzz;
+  std::mt19937_64 rng(20261127);
+  const std::vector<std::string> values = {
+      "", "0", "1", "-1", "+1", "++1", "-+1", "2", "8", "16", "17", "9223372036854775807", "9223372036854775808",
+      "-9223372036854775808", "99999999999999999999", "1e308", "1e309", "1e-307", "1e-320", "4.9e-324", "2.2250738585072014e-308",
+      "0.0", "-0", "1.5", ".5", "5.", "1e", "1e+", "e5", "nan", "inf", "-inf", "0x10", " 1", "1 ", "1,2", "1,,2", ",", "1,2,3",
+      "2..8", "8..2", "..", "2..", "all", "zoo", "lpf", "midpoint", "gauss-interior", "gauss_lobatto", "-", "./F", "F",
+      "d/../F", "/dev/null", "--csv", "--help", "-h", "=", "==", std::string(1, '\x01'), std::string("a\x7f" "b"),
+      std::string(300, '9'), std::string(70, ',')};
+  auto pick = [&](const std::vector<std::string>& v) { return v[rng() % v.size()]; };
+  auto random_bytes = [&] {
+    std::string s(rng() % 12, ' ');
+    for (char& c : s) c = static_cast<char>(1 + rng() % 255);  // no NUL: argv strings end there
+    return s;
+  };
+  auto mutate = [&](std::string s) {  // a near-miss: a character dropped, doubled or changed
+    if (s.empty()) return s;
+    const std::size_t i = rng() % s.size();
+    switch (rng() % 3) {
+      case 0: s.erase(i, 1); break;
+      case 1: s.insert(i, 1, s[i]); break;
+      default: s[i] = static_cast<char>(32 + rng() % 95); break;
+    }
+    return s;
+  };
+  std::size_t count[3] = {0, 0, 0};
+  const auto start = std::chrono::steady_clock::now();
+  long vectors = 0;
+  for (; vectors < 200000 && std::chrono::steady_clock::now() - start < std::chrono::seconds(2); ++vectors) {
+    std::vector<std::string> args;
+    const int n = static_cast<int>(rng() % 7);
+    for (int i = 0; i < n; ++i) {
+      std::string flag = pick(fz::flag_names());
+      if (rng() % 8 == 0) flag = mutate(flag);
+      switch (rng() % 6) {
+        case 0: args.push_back(flag); break;
+        case 1: args.push_back(flag + "=" + pick(values)); break;
+        case 2: args.push_back(random_bytes()); break;
+        default:
+          args.push_back(flag);
+          args.push_back(rng() % 4 == 0 ? mutate(pick(values)) : pick(values));
+      }
+    }
+    fz::outcome o{};
+    try {
+      o = fz::parse_command_line(args);
+    } catch (const std::exception& e) {
+      std::string line;
+      for (const std::string& a : args) line += cli::in_quotes(a) + " ";
+      FAIL("escaped: " << e.what() << " for " << line);
+    }
+    ++count[static_cast<int>(o)];
+  }
+  // Every outcome occurs (the generator reaches accepted lines, usage errors and --help).
+  CHECK(count[static_cast<int>(fz::outcome::accepted)] > 0);
+  CHECK(count[static_cast<int>(fz::outcome::usage_error)] > 0);
+  CHECK(count[static_cast<int>(fz::outcome::help)] > 0);
+  CHECK(vectors > 1000);
 }

@@ -321,6 +321,6 @@ int main(int argc, char** argv) {
     return two_step(o);
   } catch (const std::exception& e) {
     std::cerr << "geomint-scheme: " << e.what() << "\n";
-    return cli::exit_run_failure;
+    return cli::finish_stdout("geomint-scheme", cli::exit_run_failure);
   }
 }

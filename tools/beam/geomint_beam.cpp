@@ -43,6 +43,8 @@ const char* usage_text =
     "  --snapshots M      number of evenly spaced centreline snapshots (default 6, 2..10^4)\n"
     "  --drift FILE       write step,t,max_position,max_rotation: per-node reconstruction (55)\n"
     "                     against the strain-consistent one, every K steps\n"
+    "                     (FILE '-' is standard output; each output needs a file of its own;\n"
+    "                     a file appears, whole, when the run ends)\n"
     "  --cayley V         velocity in (55): previous (zeta^n, as printed; default), current\n"
     "                     (zeta^{n+1}) or midpoint\n"
     "  --reconstruction R per-node (default) or strain: configurations used for the momentum\n"
@@ -76,9 +78,9 @@ std::optional<int> parse(int argc, char** argv, config& c) {
       .value("--nodes", [&](const std::string& v) { c.nodes = cli::parse_integer<long>("--nodes", v, 2, max_nodes); })
       .value("--every", [&](const std::string& v) { c.every = cli::parse_integer<long>("--every", v, 1, max_steps); })
       .value("--snapshots", [&](const std::string& v) { c.snapshots = cli::parse_integer<long>("--snapshots", v, 2, 10000); })
-      .value("--csv", [&](const std::string& v) { c.csv = v; })
-      .value("--centreline", [&](const std::string& v) { c.centreline = v; })
-      .value("--drift", [&](const std::string& v) { c.drift = v; })
+      .output("--csv", c.csv)
+      .output("--centreline", c.centreline)
+      .output("--drift", c.drift)
       .value("--scheme", [&](const std::string& v) {
         c.method = cli::parse_choice("--scheme", v, {"poisson", "hamel"}) == "poisson" ? gb::scheme::poisson : gb::scheme::hamel;
       })
@@ -123,8 +125,8 @@ int run(const config& c) {
   opt.configurations = c.recon;
   gb::integrator<T> beam = pc.make(opt);
 
-  // The output files, written in whole rows (a failed write leaves each file valid up to its
-  // last complete row and stops the run with a message).
+  // The output files, each written to a temporary file and renamed over its path when every
+  // row was written (a failed write stops the run with its reason and leaves the path as it was).
   cli::csv_file csv_file, centreline_file, drift_file;
   for (auto [file, path] : {std::pair{&csv_file, &c.csv}, {&centreline_file, &c.centreline}, {&drift_file, &c.drift}})
     if (!path->empty() && !file->open(*path)) {

@@ -10,22 +10,27 @@
 ///    std::from_chars (no saturation: a value beyond the stated bound is reported, never
 ///    clamped), reals in plain decimal notation with overflow and underflow reported (a value
 ///    that does not survive the conversion to double is refused, not rounded to 0 or infinity);
-///  - output is checked: standard output is flushed and its state tested before the exit
-///    (finish_stdout), and CSV files are written in whole rows (csv_file), so that a failed write
-///    is reported with a non-zero exit (exit_output) and leaves a file that ends with its last
-///    complete row.
+///  - output is checked: standard output goes through a buffer that records the reason (errno
+///    text) of the first failed write, and is flushed and tested before the exit
+///    (finish_stdout); output files (csv_file) are written to a temporary file in the same
+///    directory and renamed over the target only when every write succeeded (removed
+///    otherwise), so that a reader never sees a partial or interleaved file; a failed write is
+///    reported with its reason and a non-zero exit (exit_output);
+///  - two output flags naming the same file (parser::output) are a usage error.
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <streambuf>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -270,6 +275,8 @@ inline std::vector<std::string> parse_node_family_list(std::string_view flag, st
 // The parser
 // ---------------------------------------------------------------------------------------------
 
+inline void use_checked_stdout();
+
 /// The flags of one tool. Register each flag with a handler, then call parse():
 ///
 ///     cli::parser cl("geomint-run", usage);
@@ -281,7 +288,9 @@ inline std::vector<std::string> parse_node_family_list(std::string_view flag, st
 /// prefixed with the flag).
 class parser {
  public:
-  parser(std::string program, std::string usage) : program_(std::move(program)), usage_(std::move(usage)) {}
+  parser(std::string program, std::string usage) : program_(std::move(program)), usage_(std::move(usage)) {
+    use_checked_stdout();
+  }
 
   /// A flag that takes a value (`--flag value` or `--flag=value`; never empty).
   parser& value(const std::string& flag, std::function<void(const std::string&)> handler) {
@@ -291,6 +300,13 @@ class parser {
   /// A switch without a value.
   parser& toggle(const std::string& flag, std::function<void()> handler) {
     add(flag, {false, {}, std::move(handler)});
+    return *this;
+  }
+  /// An output file flag: its value (a path, "-" for standard output) is stored in `path`.
+  /// Two output flags that name the same file are a usage error naming both.
+  parser& output(const std::string& flag, std::string& path) {
+    add(flag, {true, [&path](const std::string& v) { path = v; }, {}});
+    outputs_.push_back({flag, &path});
     return *this;
   }
 
@@ -325,6 +341,29 @@ class parser {
   /// help_requested.
   struct help_requested {};
   void parse_or_throw(int argc, const char* const* argv) const {
+    parse_flags(argc, argv);
+    for (std::size_t a = 0; a < outputs_.size(); ++a)
+      for (std::size_t b = a + 1; b < outputs_.size(); ++b)
+        if (same_output(*outputs_[a].path, *outputs_[b].path))
+          throw usage_error(outputs_[a].flag + " and " + outputs_[b].flag + " name the same file " +
+                            in_quotes(*outputs_[b].path) + " (each output needs a file of its own)");
+  }
+
+  /// Whether two output paths name the same file: both standard output ("-"), the same path
+  /// after resolving ".", ".." and symbolic links, or the same existing file (hard links).
+  static bool same_output(const std::string& a, const std::string& b) {
+    if (a.empty() || b.empty()) return false;
+    if (a == "-" || b == "-") return a == b;
+    struct stat sa{}, sb{};
+    if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0) return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    std::error_code ea, eb;
+    const auto ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a, ea), ea);
+    const auto cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b, eb), eb);
+    return ea || eb ? a == b : ca == cb;
+  }
+
+ private:
+  void parse_flags(int argc, const char* const* argv) const {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i] ? argv[i] : "";
       if (arg == "--help" || arg == "-h") throw help_requested{};
@@ -363,7 +402,6 @@ class parser {
     }
   }
 
- private:
   struct entry {
     bool takes_value = false;
     std::function<void(const std::string&)> on_value;
@@ -376,13 +414,93 @@ class parser {
   }
   static int finish_stdout_impl(const std::string& program);
 
+  struct output_flag {
+    std::string flag;
+    const std::string* path;
+  };
   std::string program_, usage_;
   std::map<std::string, entry> flags_;
+  std::vector<output_flag> outputs_;
 };
 
 // ---------------------------------------------------------------------------------------------
 // Checked output
 // ---------------------------------------------------------------------------------------------
+
+namespace detail {
+
+/// "cannot write to <where>: <strerror(err)>".
+inline std::string write_error(const std::string& where, int err) {
+  return "cannot write to " + where + ": " + std::strerror(err != 0 ? err : EIO);
+}
+
+/// Writes all of [data, data + size) to fd (retrying after EINTR and short writes); the number
+/// of bytes written, and in `err` the errno of a failure (0 if none).
+inline std::size_t write_all(int fd, const char* data, std::size_t size, int& err) {
+  std::size_t written = 0;
+  err = 0;
+  while (written < size) {
+    const ssize_t n = ::write(fd, data + written, size - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      err = n < 0 ? errno : EIO;
+      break;
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  return written;
+}
+
+/// The buffer of std::cout: write(2) to a file descriptor, keeping the errno of the first failed
+/// write so that the message can name the reason (an iostream keeps only a failbit, and errno is
+/// long overwritten when the tool reports). After a failure every write fails.
+class checked_fd_buffer : public std::streambuf {
+ public:
+  explicit checked_fd_buffer(int fd) : fd_(fd) { setp(buffer_, buffer_ + sizeof buffer_); }
+  int error() const { return error_; }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (sync() != 0) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override {
+    if (error_ != 0) return -1;
+    const std::size_t size = static_cast<std::size_t>(pptr() - pbase());
+    int err = 0;
+    write_all(fd_, pbase(), size, err);
+    setp(buffer_, buffer_ + sizeof buffer_);
+    if (err != 0) error_ = err;
+    return error_ != 0 ? -1 : 0;
+  }
+
+ private:
+  int fd_;
+  int error_ = 0;
+  char buffer_[1 << 14];
+};
+
+/// The checked buffer of std::cout, installed once (never destroyed: std::cout is flushed at
+/// exit, after the destruction of function-local statics).
+inline checked_fd_buffer& stdout_buffer() {
+  static checked_fd_buffer* buffer = [] {
+    auto* b = new checked_fd_buffer(STDOUT_FILENO);
+    std::cout.flush();
+    std::cout.rdbuf(b);
+    return b;
+  }();
+  return *buffer;
+}
+
+}  // namespace detail
+
+/// Routes std::cout through the checked buffer (idempotent; parser's constructor calls it, so
+/// every tool has it before it writes).
+inline void use_checked_stdout() { (void)detail::stdout_buffer(); }
 
 /// Flushes std::cout and tests it. Returns `status` when every write succeeded; otherwise prints
 /// `<program>: cannot write to standard output: <reason>` on stderr and returns exit_output
@@ -390,24 +508,26 @@ class parser {
 inline int finish_stdout(const std::string& program, int status = exit_ok) {
   errno = 0;
   std::cout.flush();
-  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+  const int err = detail::stdout_buffer().error() != 0 ? detail::stdout_buffer().error() : errno;
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) || detail::stdout_buffer().error() != 0;
   if (!failed) return status;
-  const int err = errno;
-  std::cerr << program << ": cannot write to standard output" << (err ? std::string(": ") + std::strerror(err) : "") << '\n';
+  std::cerr << program << ": " << detail::write_error("standard output", err != 0 ? err : errno) << '\n';
   return status != exit_ok ? status : exit_output;
 }
 
 inline int parser::finish_stdout_impl(const std::string& program) { return finish_stdout(program, exit_ok); }
 
 /// True while std::cout is writable; long loops call it to stop early on a dead output.
-inline bool stdout_ok() { return static_cast<bool>(std::cout) && !std::ferror(stdout); }
+inline bool stdout_ok() { return static_cast<bool>(std::cout) && !std::ferror(stdout) && detail::stdout_buffer().error() == 0; }
 
-/// A CSV output written in whole rows. Rows are buffered and written with write(2) in blocks of
-/// complete rows; a failed or partial write truncates a regular file back to its last complete
-/// row, records the reason and makes every later call a no-op. close() (or the destructor)
-/// writes what is buffered; its result and error() tell whether every row reached the file.
-/// "-" writes to standard output (flushing std::cout first so that the order is kept; a pipe
-/// cannot be truncated, so a partial last row is possible there).
+/// A CSV output written in whole rows, atomically. A file is written to a temporary file
+/// `<path>.tmp.XXXXXX` in the same directory and renamed over `path` by close() when every
+/// write succeeded, so that a reader (or another process writing the same path) never sees a
+/// partial or interleaved file; on a failed write the temporary file is removed and `path` is
+/// left as it was. An existing target that is not a regular file (a device such as /dev/null or
+/// /dev/full, a FIFO) is written directly; a symbolic link is followed. "-" writes to standard
+/// output (flushing std::cout first so that the order is kept). The first failure records its
+/// reason (errno text) in error() and makes every later call a no-op.
 class csv_file {
  public:
   csv_file() = default;
@@ -415,27 +535,45 @@ class csv_file {
   csv_file& operator=(const csv_file&) = delete;
   ~csv_file() { (void)close(); }
 
-  /// Opens (creates or truncates) `path`; false with error() set when that fails.
+  /// Opens `path` for writing; false with error() set when that fails.
   bool open(const std::string& path) {
     (void)close();
     path_ = path;
+    target_ = path;
+    temporary_.clear();
     error_.clear();
-    committed_ = 0;
     if (path == "-") {
+      std::cout.flush();
       fd_ = STDOUT_FILENO;
       owned_ = false;
-      std::cout.flush();
-    } else {
-      fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-      owned_ = true;
-      if (fd_ < 0) {
-        error_ = "cannot open '" + path + "' for writing: " + std::strerror(errno);
-        fd_ = -1;
-        return false;
-      }
+      return true;
     }
+    owned_ = true;
     struct stat st{};
-    truncatable_ = ::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode);
+    const bool exists = ::stat(path.c_str(), &st) == 0;
+    if (exists && S_ISDIR(st.st_mode)) return fail_open(EISDIR);
+    if (exists && !S_ISREG(st.st_mode)) {  // a device or FIFO: written in place
+      fd_ = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+      return fd_ >= 0 || fail_open(errno);
+    }
+    if (exists) {
+      std::error_code ec;
+      const auto resolved = std::filesystem::canonical(path, ec);  // follow a symbolic link
+      if (!ec) target_ = resolved.string();
+    }
+    std::string name = target_ + ".tmp.XXXXXX";
+    fd_ = ::mkstemp(name.data());
+    if (fd_ < 0) return fail_open(errno);
+    temporary_ = name;
+    (void)::fcntl(fd_, F_SETFD, FD_CLOEXEC);
+    // The permissions a plain open(O_CREAT, 0666) would give, or the existing file's.
+    mode_t mode = exists ? (st.st_mode & 07777) : 0;
+    if (!exists) {
+      const mode_t mask = ::umask(0);
+      ::umask(mask);
+      mode = 0666 & ~mask;
+    }
+    (void)::fchmod(fd_, mode);
     return true;
   }
 
@@ -456,34 +594,26 @@ class csv_file {
   /// Writes the buffered rows; false (with error()) when a write failed.
   bool flush() {
     if (fd_ < 0 || !ok()) return ok();
-    std::size_t written = 0;
-    while (written < buffer_.size()) {
-      const ssize_t n = ::write(fd_, buffer_.data() + written, buffer_.size() - written);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {
-        const int err = n < 0 ? errno : EIO;
-        // Keep the rows that reached the file whole: cut back to the last newline written.
-        const std::size_t complete = written == 0 ? 0 : buffer_.rfind('\n', written - 1) + 1;
-        if (truncatable_) (void)!::ftruncate(fd_, static_cast<off_t>(committed_ + complete));
-        committed_ += complete;
-        error_ = "cannot write to " + (path_ == "-" ? std::string("standard output") : "'" + path_ + "'") + ": " +
-                 std::strerror(err);
-        buffer_.clear();
-        return false;
-      }
-      written += static_cast<std::size_t>(n);
-    }
-    committed_ += buffer_.size();
+    int err = 0;
+    detail::write_all(fd_, buffer_.data(), buffer_.size(), err);
     buffer_.clear();
-    return true;
+    if (err != 0) error_ = detail::write_error(path_ == "-" ? std::string("standard output") : "'" + path_ + "'", err);
+    return ok();
   }
 
-  /// Flushes and closes; true when every row was written.
+  /// Flushes and closes; on success renames the temporary file over the target, on failure
+  /// removes it. True when every row was written.
   bool close() {
     if (fd_ < 0) return ok();
     (void)flush();
     if (owned_ && ::close(fd_) != 0 && ok()) error_ = "cannot close '" + path_ + "': " + std::strerror(errno);
     fd_ = -1;
+    if (!temporary_.empty()) {
+      if (ok() && ::rename(temporary_.c_str(), target_.c_str()) != 0)
+        error_ = "cannot rename the temporary file to '" + path_ + "': " + std::strerror(errno);
+      if (!ok()) (void)::unlink(temporary_.c_str());
+      temporary_.clear();
+    }
     return ok();
   }
 
@@ -498,10 +628,15 @@ class csv_file {
   static constexpr std::size_t block_size = std::size_t{1} << 16;
 
  private:
+  bool fail_open(int err) {
+    error_ = "cannot open '" + path_ + "' for writing: " + std::strerror(err);
+    fd_ = -1;
+    return false;
+  }
+
   int fd_ = -1;
-  bool owned_ = false, truncatable_ = false;
-  std::string path_, error_, buffer_;
-  std::size_t committed_ = 0;  ///< bytes of complete rows in the file
+  bool owned_ = false;
+  std::string path_, target_, temporary_, error_, buffer_;
 };
 
 }  // namespace geomint::cli

@@ -137,6 +137,6 @@ int main(int argc, char** argv) {
     return cli::finish_stdout("geomint-brouwer", status);
   } catch (const std::exception& e) {
     std::cerr << "geomint-brouwer: " << e.what() << '\n';
-    return 1;
+    return cli::finish_stdout("geomint-brouwer", 1);
   }
 }

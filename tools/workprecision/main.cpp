@@ -21,7 +21,7 @@ namespace {
 
 const char* usage =
     "usage: geomint-workprecision [--system pendulum|kepler|outer-solar] [--digits 16|50] [--csv]\n"
-    "                             [--t-end T (> 0)] [--max-seconds S (> 0)] [--methods a,b,...]\n"
+    "                             [--t-end T (0..10^6)] [--max-seconds S (> 0)] [--methods a,b,...]\n"
     "                             [--plain-summation] [--passes N (1..10)]\n"
     "Work-precision of geomint's variational integrators (LPF on Gauss interior nodes in its\n"
     "Newton and its fixed-point form, lpf-fixed-point-m*, and Galerkin up to m = 16, and more;\n"
@@ -41,7 +41,10 @@ const char* usage =
     "--digits 50: cpp_bin_float_50, T = 100 (default), errors down to 1e-40, --max-seconds default 4.\n"
     "Fixed-step methods: tau = T/steps shrinks by 2^(1/4); adaptive ones: tolerance by 10^(1/4);\n"
     "a sweep stops below the error floor, when the error stops improving, or when one run takes\n"
-    "more than S CPU seconds. The reference is the closed form in a wider scalar.\n"
+    "more than S CPU seconds: such a run is stopped there (checked every 256 steps; the first\n"
+    "run of a sweep gets at least 1 s). T is at most 10^6 (a stated bound: beyond it the\n"
+    "reference and the Taylor-series flow would take hours); the Taylor-series flow refuses a T\n"
+    "beyond 10^8 of its steps. The reference is the closed form in a wider scalar.\n"
     "--csv prints method,tau,steps,cpu_seconds,final_error,max_energy_error (one row per run;\n"
     "the final error is |(q, qdot) - (q, qdot)_ref| at T, the energy error absolute)\n"
     "followed by the summary as '#' lines; otherwise a table and the summary. The summary\n"
@@ -64,7 +67,10 @@ int main(int argc, char** argv) {
       .value("--system", [&](const std::string& v) { o.system = geomint::cli::parse_choice("--system", v, {"pendulum", "kepler", "outer-solar"}); })
       .value("--digits",
              [&](const std::string& v) { o.digits = geomint::cli::parse_choice("--digits", v, {"16", "50"}) == "16" ? 16 : 50; })
-      .value("--t-end", [&](const std::string& v) { o.t_end = geomint::cli::parse_real("--t-end", v, geomint::cli::real_bound::positive); })
+      .value("--t-end", [&](const std::string& v) {
+        o.t_end = geomint::cli::parse_real("--t-end", v, geomint::cli::real_bound::positive);
+        if (*o.t_end > 1e6) throw geomint::cli::usage_error("--t-end is out of range: '" + v + "' (expected T <= 10^6)");
+      })
       .value("--max-seconds",
              [&](const std::string& v) { o.max_seconds = geomint::cli::parse_real("--max-seconds", v, geomint::cli::real_bound::positive); })
       .value("--methods", [&](const std::string& v) { o.only = geomint::cli::split_list("--methods", v); })

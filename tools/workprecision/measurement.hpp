@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "geomint/core/checked_cast.hpp"
 #include "methods.hpp"
 #include "progress.hpp"
 
@@ -54,12 +55,6 @@ struct result {
   double max_energy_error = 0;
 };
 
-inline double cpu_now() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
-}
-
 /// |(q, p) - (q, p)_ref| (Euclidean) in the reference scalar R.
 template <class R, class T, int n>
 double phase_error(const arr<T, n>& q, const arr<T, n>& p, const analysis::closed_form_state<R, n>& ref) {
@@ -73,14 +68,16 @@ double phase_error(const arr<T, n>& q, const arr<T, n>& p, const analysis::close
 }
 
 /// The fastest of repeated timed runs (at least 3, up to 20 or 0.05 s of CPU time), the final
-/// state in q, p and the steps taken; nullopt if a run fails.
+/// state in q, p and the steps taken; nullopt if a run fails. Each run has max_seconds of CPU
+/// time (run_budget); one that needs more throws run_stopped.
 template <class P, class T>
 std::optional<double> fastest_run(const method<T, P::n>& m, long knob, const T& t_end, arr<T, P::n>& q,
-                                  arr<T, P::n>& p, long& steps) {
+                                  arr<T, P::n>& p, long& steps, double max_seconds) {
   double best = std::numeric_limits<double>::infinity(), spent = 0;
   for (int rep = 0; rep < 20; ++rep) {
     q = P::template q0<T>();
     p = P::template v0<T>();
+    run_budget::current().start(max_seconds);
     const double t0 = cpu_now();
     steps = m.run(knob, t_end, q, p, nullptr);
     const double dt = cpu_now() - t0;
@@ -92,16 +89,18 @@ std::optional<double> fastest_run(const method<T, P::n>& m, long knob, const T& 
   return best;
 }
 
+/// One point of a sweep: the fastest timed run and an untimed, monitored run (the monitor
+/// costs time of its own: that run has four times the budget).
 template <class P, class T, class R>
 std::optional<result> measure(const method<T, P::n>& m, long knob, const T& t_end,
-                              const analysis::closed_form_state<R, P::n>& ref) {
+                              const analysis::closed_form_state<R, P::n>& ref, double max_seconds) {
   constexpr int n = P::n;
   result r;
   r.method = m.name;
   r.knob = knob;
   arr<T, n> q{}, p{};
   long steps = 0;
-  const auto best = fastest_run<P, T>(m, knob, t_end, q, p, steps);
+  const auto best = fastest_run<P, T>(m, knob, t_end, q, p, steps, max_seconds);
   if (!best) return std::nullopt;
   r.cpu = *best;
   r.steps = steps;
@@ -115,6 +114,7 @@ std::optional<result> measure(const method<T, P::n>& m, long knob, const T& t_en
     const T d = abs(T(P::energy(qq, pp) - E0));
     if (d > worst) worst = d;
   };
+  run_budget::current().start(4 * max_seconds);
   if (m.run(knob, t_end, q2, p2, &monitor) < 0) return std::nullopt;
   r.max_energy_error = static_cast<double>(worst);
   return r;
@@ -143,8 +143,11 @@ template <class P, class T, class R>
 int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> all) {
   const double t_end_d = o.t_end.value_or(g.t_end * P::horizon);
   const double max_seconds = o.max_seconds.value_or(g.digits == 16 ? 1.0 : 4.0);
-  const T t_end = T(static_cast<long>(t_end_d)) == T(t_end_d) ? T(static_cast<long>(t_end_d)) : T(t_end_d);
-  const auto ref = P::template exact<R>(R(static_cast<long>(t_end_d)) == R(t_end_d) ? R(static_cast<long>(t_end_d)) : R(t_end_d));
+  // An integer T exactly in T and R (from its integer value, not through double).
+  const auto whole = checked_integer<long>(t_end_d);
+  const bool integer = whole && double(*whole) == t_end_d;
+  const T t_end = integer ? T(*whole) : T(t_end_d);
+  const auto ref = P::template exact<R>(integer ? R(*whole) : R(t_end_d));
   if (!o.only.empty()) {
     for (const auto& name : o.only)
       if (std::none_of(all.begin(), all.end(), [&](const auto& m) { return m.name == name; }))
@@ -159,7 +162,18 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
     double prev_error = std::numeric_limits<double>::infinity();
     int worse = 0;
     for (int k = 0; k < 160; ++k) {  // 40 decades of tolerance, 40 doublings of steps
-      const auto r = measure<P, T, R>(m, knob, t_end, ref);
+      std::optional<result> r;
+      try {
+        // Each run is stopped after S CPU seconds; the first of a sweep gets at least one second,
+        // so that every method has its first point (which the sweep criteria then judge).
+        r = measure<P, T, R>(m, knob, t_end, ref, k == 0 ? std::max(max_seconds, 1.0) : max_seconds);
+      } catch (const run_stopped& e) {
+        std::cerr << "geomint-workprecision: " << m.name << " at knob " << knob << ": " << e.what() << "; its sweep ends here\n";
+        break;
+      } catch (const std::exception& e) {
+        std::cerr << "geomint-workprecision: " << m.name << " failed at knob " << knob << ": " << e.what() << " (skipped)\n";
+        break;
+      }
       if (!r) {
         std::cerr << "geomint-workprecision: " << m.name << " failed at knob " << knob << " (skipped)\n";
         if (m.kind == knob_kind::tolerance) break;  // the controller met round-off
@@ -187,7 +201,11 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
       for (result& r : by_method[m.name]) {
         arr<T, P::n> q{}, p{};
         long steps = 0;
-        if (const auto best = fastest_run<P, T>(m, r.knob, t_end, q, p, steps)) r.cpu = std::min(r.cpu, *best);
+        try {
+          if (const auto best = fastest_run<P, T>(m, r.knob, t_end, q, p, steps, std::max(max_seconds, 1.0)))
+            r.cpu = std::min(r.cpu, *best);
+        } catch (const run_stopped&) {  // slower this pass: the first pass's time stands
+        }
       }
       bar.advance();
     }

@@ -5,11 +5,17 @@
 /// runge_kutta_fehlberg78 and bulirsch_stoer) runs with absolute and relative tolerance
 /// 10^(-knob/4). The Taylor-series flow (analysis/reference_flow.hpp) picks its own order and
 /// steps for the scalar's precision and runs once. Every run returns the number of steps taken
-/// (or -1 on a failed step); `monitor`, if given, sees the state after every step.
+/// (or -1 on a failed step); `monitor`, if given, sees the state after every step. Every run
+/// loop checks the CPU-time budget of the run (run_budget, --max-seconds) every few steps and
+/// throws run_stopped once it is spent, so that no run outlasts its budget by more than a few
+/// steps.
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <ctime>
 #include <functional>
+#include <limits>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +42,38 @@ template <class T, int n>
 using monitor_fn = std::function<void(const arr<T, n>&, const arr<T, n>&)>;
 
 enum class knob_kind { steps, tolerance, none };
+
+inline double cpu_now() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
+}
+
+/// A run stopped by its CPU-time budget.
+struct run_stopped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The CPU-time budget of the current run (one per thread): start() before a run; the run loops
+/// call check(k) at their step k, which reads the clock every 256 steps (a few ns per step).
+class run_budget {
+ public:
+  static run_budget& current() {
+    static thread_local run_budget budget;
+    return budget;
+  }
+  void start(double seconds) {
+    limit_ = seconds;
+    start_ = cpu_now();
+  }
+  void check(long k) const {
+    if ((k & 255) == 0 && cpu_now() - start_ > limit_)
+      throw run_stopped("stopped after " + std::to_string(limit_) + " CPU seconds (--max-seconds)");
+  }
+
+ private:
+  double limit_ = std::numeric_limits<double>::infinity(), start_ = 0;
+};
 
 template <class T, int n>
 struct method {
@@ -80,7 +118,9 @@ method<T, P::n> geomint_method(std::string name, long first_steps, bool compensa
         vv[std::size_t(i)] = s.p[i] / mass[std::size_t(i)];
       }
     };
+    const run_budget& budget = run_budget::current();
     for (long k = 0; k < steps; ++k) {
+      budget.check(k);
       if (!integ.try_step(s)) return -1;
       if (mon) {
         arr<T, n> qq, vv;
@@ -105,7 +145,9 @@ method<T, P::n> odeint_rkn(std::string name, long first_steps) {
     auto mom = [](const arr<T, n>& qq, arr<T, n>& dpdt) { P::force(qq, dpdt); };
     const T tau = t_end / T(steps);
     T t(0);
+    const run_budget& budget = run_budget::current();
     for (long k = 0; k < steps; ++k) {
+      budget.check(k);
       stepper.do_step(std::make_pair(coor, mom), std::make_pair(std::ref(q), std::ref(p)), t, tau);
       t += tau;
       if (mon) (*mon)(q, p);
@@ -125,7 +167,9 @@ method<T, P::n> odeint_verlet(std::string name, long first_steps) {
     auto accel = [](const arr<T, n>& qq, const arr<T, n>&, arr<T, n>& a, const T&) { P::force(qq, a); };
     const T tau = t_end / T(steps);
     T t(0);
+    const run_budget& budget = run_budget::current();
     for (long k = 0; k < steps; ++k) {
+      budget.check(k);
       stepper.do_step(accel, std::make_pair(std::ref(q), std::ref(p)), t, tau);
       t += tau;
       if (mon) (*mon)(q, p);
@@ -146,7 +190,9 @@ method<T, P::n> composition_method(std::string name, const analysis::symmetric_c
     arr<T, n> f;
     P::force(q, f);
     auto force = [](const arr<T, n>& qq, arr<T, n>& ff) { P::force(qq, ff); };
+    const run_budget& budget = run_budget::current();
     for (long k = 0; k < steps; ++k) {
+      budget.check(k);
       analysis::composition_step(gamma, q, p, f, tau, force);
       if (mon) (*mon)(q, p);
     }
@@ -186,8 +232,10 @@ long adaptive_run(Stepper& stepper, const T& t_end, arr<T, P::n>& q, arr<T, P::n
   // Below this step size the controller has met round-off (tolerance near the scalar's
   // precision): reported as a failed run instead of creeping on.
   const T dt_min = t_end / T(1000000000L);
+  const run_budget& budget = run_budget::current();
   for (long attempts = 0; t < t_end; ++attempts) {
     if (attempts > 20000000L || dt < dt_min) return -1;
+    budget.check(attempts);
     if (t + dt > t_end) dt = t_end - t;
     if (stepper.try_step(rhs, x, t, dt) == odeint::success) {
       ++accepted;
@@ -253,8 +301,17 @@ method<T, P::n> taylor_method(std::string name) {
     };
     // Monitored: 1000 sample times (the flow's own steps are not exposed).
     const long samples = mon ? 1000 : 1;
+    // Bounded up front as reference_flow::advance_to is (a run beyond its step bound is
+    // refused before the first step), then 256 Taylor steps at a time between two looks at the
+    // clock; the flow's t + h == t check ends a run that cannot reach t_end.
+    constexpr long max_steps = analysis::reference_flow<typename P::sys, T>::default_max_steps;
+    if (flow.estimated_steps(t_end) > T(max_steps))
+      throw std::length_error("taylor-series: T = " + std::to_string(static_cast<double>(t_end)) + " needs more than " +
+                              std::to_string(max_steps) + " Taylor steps");
+    const run_budget& budget = run_budget::current();
     for (long k = 1; k <= samples; ++k) {
-      flow.advance_to(k == samples ? t_end : T(t_end * T(k) / T(samples)));
+      const T target = k == samples ? t_end : T(t_end * T(k) / T(samples));
+      while (!flow.advance_toward(target, 256)) budget.check(0);
       if (mon) {
         arr<T, n> qq, vv;
         to_shared(qq, vv);

@@ -271,7 +271,7 @@ template <class T, int N> dual<T, N> fabs(const dual<T, N>& x) { return abs(x); 
 /// x^k for an integer exponent (exact derivative k x^(k-1), by repeated multiplication).
 template <class T, int N> dual<T, N> pow(const dual<T, N>& x, int k) {
   dual<T, N> r(1), base = x;
-  unsigned e = static_cast<unsigned>(k < 0 ? -k : k);
+  unsigned e = k < 0 ? 0u - static_cast<unsigned>(k) : static_cast<unsigned>(k);  // |k|, also for INT_MIN
   while (e) {
     if (e & 1u) r *= base;
     base *= base;

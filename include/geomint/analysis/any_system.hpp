@@ -22,6 +22,7 @@
 
 #include "geomint/analysis/order_study.hpp"
 #include "geomint/analysis/symplecticity.hpp"
+#include "geomint/core/checked_cast.hpp"
 #include "geomint/core/multiprecision.hpp"
 #include "geomint/integrator.hpp"
 
@@ -48,7 +49,9 @@ dynamic_vector<To> convert_dynamic(const dynamic_vector<From>& x) {
 }  // namespace detail
 
 /// The exact flow of Sys from (q0, p0) to time t, to the working precision of T (see above).
-/// Throws std::runtime_error if 2^20 steps per unit time do not reach agreement.
+/// Throws std::runtime_error if 2^20 steps per unit time do not reach agreement,
+/// std::domain_error for t < 0 or not finite and std::out_of_range when t is so large that the
+/// step counts would overflow (t above about 1.1e12); t = 0 gives (q0, p0).
 template <class Sys, class T, class R = reference_scalar_for<T>>
 reference_function<T> galerkin_reference(const Sys& sys, const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& p0) {
   constexpr int n = Sys::dof;
@@ -69,8 +72,19 @@ reference_function<T> galerkin_reference(const Sys& sys, const vec<T, Sys::dof>&
       qe = s.q;
       pe = s.p;
     };
-    // Start near 8 steps per unit time (at least 2 steps), refine until two runs agree.
-    long steps = static_cast<long>(max(T(2), T(ceil(T(8) * abs(t)))));
+    if (!is_finite(t) || t < T(0)) throw std::domain_error("geomint::galerkin_reference: t must be finite and >= 0");
+    if (t == T(0)) {
+      q = q0;
+      p = p0;
+      return;
+    }
+    // Start near 8 steps per unit time (at least 2 steps), refine until two runs agree; the
+    // last refinement's 2^20 times as many steps must be a long (checked_cast.hpp).
+    const auto start = checked_integer<long>(T(max(T(2), T(ceil(T(8) * abs(t))))));
+    if (!start || !checked_mul(*start, 1L << 20))
+      throw std::out_of_range("geomint::galerkin_reference: t = " + geomint::detail::short_number(static_cast<double>(t)) +
+                              " needs more steps than a long counts (8 per unit time, refined 2^20 times)");
+    long steps = *start;
     vec<R, n> qa, pa, qb, pb;
     run(steps, qa, pa);
     for (int refinement = 0; refinement < 20; ++refinement) {

@@ -21,9 +21,11 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
+#include "geomint/core/checked_cast.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/mechanics/zoo.hpp"
@@ -177,7 +179,8 @@ class reference_flow {
     if (!geomint::lagrangian_derivatives<Sys, T>::velocity(sys_, q0, p0, v_))
       throw std::invalid_argument("geomint::reference_flow: cannot recover the velocity from p0");
     using std::log;
-    order_ = std::max<std::size_t>(8, static_cast<std::size_t>(-log(std::numeric_limits<T>::epsilon()) / T(2)) + 2);
+    order_ = std::max<std::size_t>(
+        8, integer_or_throw<std::size_t>(T(-log(std::numeric_limits<T>::epsilon()) / T(2)), "geomint::reference_flow: order") + 2);
   }
 
   const T& time() const { return t_; }
@@ -186,22 +189,51 @@ class reference_flow {
   V p() const { return momentum<Sys, T>(sys_, q_, v_); }
   long steps() const { return steps_; }
 
-  /// Advances to t_end >= time().
-  void advance_to(const T& t_end) {
-    if (!geomint::is_finite(t_end) || t_end < t_) throw std::invalid_argument("geomint::reference_flow: bad end time");
-    using std::abs;
-    using std::pow;
-    const T eps = std::numeric_limits<T>::epsilon();
-    while (t_ < t_end) {
-      detail::taylor_coefficients<Sys, T>(q_, v_, order_, qc_, vc_);
-      T h = std::numeric_limits<T>::infinity();
-      for (std::size_t j : {order_ - 1, order_}) {
-        const T size = std::max(qc_[j].template lpNorm<Eigen::Infinity>(), vc_[j].template lpNorm<Eigen::Infinity>());
-        if (size > T(0)) h = std::min(h, pow(eps / size, T(1) / T(static_cast<long>(j))));
-      }
-      h /= T(2);
+  /// The step bound of advance_to unless the caller gives one: 10^8 Taylor steps.
+  static constexpr long default_max_steps = 100'000'000L;
+
+  /// Advances to t_end >= time() in at most max_steps steps, bounded up front: throws
+  /// std::length_error before the first step when t_end - time() is more than max_steps steps
+  /// of the current step size (an estimate: the step size follows the local Taylor
+  /// coefficients), and std::runtime_error if the bound is reached anyway or a step no longer
+  /// advances the time (t + h == t: t_end is beyond the resolution of T at this step size). The
+  /// state is then that of the last step taken.
+  void advance_to(const T& t_end, long max_steps = default_max_steps) {
+    using geomint::detail::short_number;
+    check_end(t_end);
+    if (t_ < t_end) {
+      const T estimate = estimated_steps(t_end);
+      if (estimate > T(max_steps))
+        throw std::length_error("geomint::reference_flow: t_end - t = " + short_number(static_cast<double>(T(t_end - t_))) +
+                                " needs about " + short_number(static_cast<double>(estimate)) +
+                                " Taylor steps, more than the bound " + std::to_string(max_steps));
+    }
+    if (!advance_toward(t_end, max_steps))
+      throw std::runtime_error("geomint::reference_flow: " + std::to_string(max_steps) + " Taylor steps end at t = " +
+                               short_number(static_cast<double>(t_)) + ", before t_end = " +
+                               short_number(static_cast<double>(t_end)));
+  }
+
+  /// (t_end - time()) / h for the step size h at the current state: the number of steps to
+  /// t_end if the step size stayed as it is (0 when t_end <= time()).
+  T estimated_steps(const T& t_end) {
+    if (!(t_ < t_end)) return T(0);
+    return (t_end - t_) / step_size();
+  }
+
+  /// At most max_steps steps toward t_end >= time(); true once time() == t_end. For callers
+  /// that bound a run by time (check the clock between calls). Throws std::runtime_error when a
+  /// step no longer advances the time (t + h == t).
+  bool advance_toward(const T& t_end, long max_steps) {
+    check_end(t_end);
+    for (long k = 0; k < max_steps && t_ < t_end; ++k) {
+      T h = step_size();
       const bool last = !(t_ + h < t_end);
       if (last) h = t_end - t_;
+      else if (!(t_ + h > t_))
+        throw std::runtime_error("geomint::reference_flow: the step " + geomint::detail::short_number(static_cast<double>(h)) +
+                                 " no longer advances t = " + geomint::detail::short_number(static_cast<double>(t_)) +
+                                 " (t + h == t): t_end is beyond the resolution of the scalar");
       V qn = qc_[order_], vn = vc_[order_];
       for (std::size_t j = order_; j-- > 0;) {
         qn = qn * h + qc_[j];
@@ -212,11 +244,29 @@ class reference_flow {
       q_ = qn;
       v_ = vn;
       t_ = last ? t_end : t_ + h;
-      ++steps_;
+      steps_ = checked_add(steps_, 1L).value_or(std::numeric_limits<long>::max());  // a count: saturates
     }
+    return !(t_ < t_end);
   }
 
  private:
+  void check_end(const T& t_end) const {
+    if (!geomint::is_finite(t_end) || t_end < t_) throw std::invalid_argument("geomint::reference_flow: bad end time");
+  }
+  /// The Taylor coefficients at the current state (into qc_, vc_) and the step size
+  /// h = min_j (eps/|z_j|)^(1/j) / 2 over the last two (Jorba & Zou 2005); infinite when both vanish.
+  T step_size() {
+    using std::pow;
+    detail::taylor_coefficients<Sys, T>(q_, v_, order_, qc_, vc_);
+    const T eps = std::numeric_limits<T>::epsilon();
+    T h = std::numeric_limits<T>::infinity();
+    for (std::size_t j : {order_ - 1, order_}) {
+      const T size = std::max(qc_[j].template lpNorm<Eigen::Infinity>(), vc_[j].template lpNorm<Eigen::Infinity>());
+      if (size > T(0)) h = std::min(h, pow(eps / size, T(1) / T(static_cast<long>(j))));
+    }
+    return h / T(2);
+  }
+
   Sys sys_;
   V q_, v_;
   T t_ = T(0);

@@ -95,7 +95,8 @@ energy_result<T> energy_behaviour(const phase_map<T>& map, const std::function<T
   // Running sums for the slope of y = H - H0 against t (t_0 = 0 included).
   T st(0), sy(0), stt(0), sty(0);
   long count = 1;
-  for (long k = 1; k <= steps; ++k) {
+  for (long done = 0; done < steps; ++done) {  // k = done + 1 <= steps: no overflow, also for steps = LONG_MAX
+    const long k = done + 1;
     if (!map(z, z1)) {
       r.ok = false;
       break;

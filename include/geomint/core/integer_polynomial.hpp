@@ -5,7 +5,8 @@
 /// most D in ascending powers, with an exact degree (-1 for zero). Besides the ring operations:
 /// exact division (`exact_quotient`, throws when the divisor does not divide), content and
 /// primitive part, and the gcd in Z[x] (`polynomial_gcd`: primitive, positive leading
-/// coefficient). Overflow of a coefficient or of the degree bound throws, never a wrong value.
+/// coefficient; gcd(0, b) is b made primitive, gcd(0, 0) = 0). Overflow of a coefficient or of
+/// the degree bound throws, never a wrong value.
 
 #include <cstdint>
 #include <stdexcept>
@@ -32,7 +33,12 @@ struct integer_polynomial {
   constexpr const big_integer<L>& operator[](int k) const { return c[k]; }
   constexpr big_integer<L>& operator[](int k) { return c[k]; }
   constexpr bool is_zero() const { return degree < 0; }
-  constexpr const big_integer<L>& lead() const { return (*this)[degree]; }
+  /// The leading coefficient; the zero polynomial has none (std::domain_error, a compile error
+  /// in a constant expression).
+  constexpr const big_integer<L>& lead() const {
+    if (degree < 0) throw std::domain_error("geomint::integer_polynomial: the zero polynomial has no leading coefficient");
+    return (*this)[degree];
+  }
 
   friend constexpr integer_polynomial operator+(const integer_polynomial& a, const integer_polynomial& b) {
     integer_polynomial r;
@@ -160,6 +166,13 @@ constexpr int gcd_degree_mod(const integer_polynomial<L, D>& a, const integer_po
 /// certificate first; an overflow is an exception, never a wrong result.
 template <int L, int D>
 constexpr integer_polynomial<L, D> polynomial_gcd(const integer_polynomial<L, D>& a, const integer_polynomial<L, D>& b) {
+  // gcd(0, b) = b up to a unit (and gcd(0, 0) = 0): the zero polynomial has no leading
+  // coefficient for the certificate below.
+  if (a.is_zero() || b.is_zero()) {
+    integer_polynomial<L, D> u = primitive_part(a.is_zero() ? b : a);
+    if (!u.is_zero() && u.lead().negative) u = big_integer<L>(-1) * u;
+    return u;
+  }
   for (std::uint32_t p : {2147483647U, 2147483629U, 2147483587U}) {
     if (residue(a.lead(), p) == 0 || residue(b.lead(), p) == 0) continue;
     if (gcd_degree_mod(a, b, p) == 0) return integer_polynomial<L, D>(big_integer<L>(1));

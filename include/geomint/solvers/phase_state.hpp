@@ -3,6 +3,10 @@
 /// around its scheme's step: input validation before, result checks, the optional monitor and
 /// the commit after. A failed step leaves the state unchanged.
 
+#include <limits>
+#include <stdexcept>
+
+#include "geomint/core/checked_cast.hpp"
 #include "geomint/linalg/types.hpp"
 #include "geomint/solvers/step_monitor.hpp"
 #include "geomint/solvers/step_status.hpp"
@@ -76,15 +80,20 @@ struct phase_state {
   phase_carry<T, n> carry{};
 
   /// Commits a successful step: (q_{k+1}, p_{k+1}), k + 1 and t_{k+1} = t0 + (k + 1 - k0) tau.
+  /// k = LONG_MAX has no successor: check_step_input refuses that step (step_index_overflow),
+  /// and commit throws std::overflow_error. A step index set by hand below k0, or so far from
+  /// it that k + 1 - k0 overflows, starts a new (k0, t0) at the current step.
   void commit(const vec<T, n>& q1, const vec<T, n>& p1, const T& tau) {
-    if (!(tau0 == tau)) {
+    const auto next = checked_add(step, 1L);
+    if (!next) throw std::overflow_error("geomint::phase_state: the step index is at its maximum (LONG_MAX)");
+    if (!(tau0 == tau) || step < k0 || !checked_sub(*next, k0)) {
       k0 = step;
       t0 = t;
       tau0 = tau;
     }
     q = q1;
     p = p1;
-    ++step;
+    step = *next;
     t = t0 + T(step - k0) * tau;
   }
   /// Commits a successful step with its new compensation terms.
@@ -94,12 +103,14 @@ struct phase_state {
   }
 };
 
-/// The checks before step k: tau finite and > 0, the data a and b finite.
+/// The checks before step k: k + 1 representable, tau finite and > 0, the data a and b finite.
 template <class T, class A, class B>
 step_status check_step_input(long k, const T& tau, const A& a, const B& b) {
   step_status st;
   st.step = k;
-  if (!is_finite(tau) || !(tau > T(0)))
+  if (k == std::numeric_limits<long>::max())
+    st.reason = step_failure::step_index_overflow;
+  else if (!is_finite(tau) || !(tau > T(0)))
     st.reason = step_failure::invalid_step_size;
   else if (!all_finite(a) || !all_finite(b))
     st.reason = step_failure::non_finite_input;

@@ -16,6 +16,7 @@ enum class step_failure {
   none,
   invalid_step_size,   ///< tau <= 0 or not finite
   non_finite_input,    ///< q, p (or x^{k-1}, x^k) contain NaN or infinity
+  step_index_overflow, ///< the step index k is LONG_MAX: step k + 1 has no index
   singular_jacobian,   ///< the Newton matrix is singular to working precision
   non_finite_iterate,  ///< the iteration (Newton or fixed-point) produced NaN or infinity, or the result is not finite
   no_convergence,      ///< the iteration budget ran out
@@ -28,6 +29,7 @@ inline std::string_view to_string(step_failure f) {
     case step_failure::none: return "ok";
     case step_failure::invalid_step_size: return "invalid step size (tau must be finite and > 0)";
     case step_failure::non_finite_input: return "non-finite input state";
+    case step_failure::step_index_overflow: return "the step index is at its maximum (LONG_MAX): no further step can be counted";
     case step_failure::singular_jacobian: return "singular Newton Jacobian";
     case step_failure::non_finite_iterate: return "the iterate became non-finite (divergence)";
     case step_failure::no_convergence: return "the iteration (Newton or fixed-point) did not converge";

@@ -1,0 +1,186 @@
+#pragma once
+/// Rooted trees (one colour, for B-series of Runge-Kutta methods) and bi-coloured rooted trees
+/// (two colours, for P-series of partitioned Runge-Kutta methods), generated up to an order.
+///
+/// Hairer, Lubich, Wanner, Geometric Numerical Integration, 2nd ed., Springer 2006 (HLW),
+/// sections III.1.1-III.1.2 (trees T, order |t|, symmetry sigma, density gamma) and III.2.1
+/// (P-trees TP: the colour of a vertex says which component, y' = f(y,z) (colour 0, "black") or
+/// z' = g(y,z) (colour 1, "white"), its elementary differential differentiates).
+///
+/// A tree is stored canonically as its root colour and the sorted multiset of the indices of the
+/// root's subtrees (t = [t_1, ..., t_m] with a coloured root), so equal trees have equal records.
+///   |t| = 1 + sum |t_i|,   gamma(t) = |t| prod gamma(t_i),
+///   sigma(t) = prod over distinct subtrees u of (multiplicity of u)! sigma(u)^(multiplicity)
+/// (HLW section III.1.2: sigma and gamma as in the B-series of the exact flow, B(e, y) with
+/// e(t) = 1/gamma(t)). Colours enter only through equality of subtrees.
+///
+/// For the substitution and Lie-derivative laws the table also holds, per tree, its edge cuts:
+/// removing one edge splits t into the part containing the root and the cut-off subtree; the
+/// pairs (root part, cut part) are listed with the number of edges giving them (their
+/// multiplicities sum to |t| - 1). In the 1/sigma normalisation of B-series, grafting a tree
+/// onto every vertex of another (the derivative F(u)'F(v) summed over vertices) corresponds
+/// exactly to this sum over edges.
+///
+/// Counts per order n = 1, 2, ...: one colour 1, 1, 2, 4, 9, 20, 48, 115, 286, 719 (OEIS
+/// A000081); two colours, per root colour, 1, 2, 7, 26, 107, 458, 2058, 9498 (OEIS A000151; the
+/// total is twice that). Both checked in tests/analysis/test_bseries_trees.cpp.
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace geomint::analysis::bseries {
+
+/// Largest orders the generator accepts (one colour: 32 973 trees of order 14; two colours:
+/// 2 x 44 947 trees of order 9).
+inline constexpr int max_tree_order_one_colour = 14;
+inline constexpr int max_tree_order_two_colours = 9;
+
+/// One tree of a tree_set.
+struct rooted_tree {
+  int order = 1;              ///< |t|, number of vertices
+  int colour = 0;             ///< colour of the root: 0 (y, f) or 1 (z, g)
+  std::vector<int> subtrees;  ///< indices of the root's subtrees, ascending (with repetition)
+  std::int64_t sigma = 1;     ///< symmetry coefficient
+  std::int64_t gamma = 1;     ///< density
+};
+
+/// One way of cutting an edge of a tree: the part holding the root, the cut-off subtree, and
+/// how many edges of the tree give this pair.
+struct edge_cut {
+  int root_part = -1;
+  int cut_part = -1;
+  int multiplicity = 0;
+};
+
+/// All (one- or two-coloured) rooted trees up to an order, by order; within an order, by root
+/// colour and then by subtree indices.
+class tree_set {
+ public:
+  /// colours: 1 for B-series (Runge-Kutta), 2 for P-series (partitioned Runge-Kutta).
+  tree_set(int max_order, int colours) : max_order_(max_order), colours_(colours) {
+    if (colours != 1 && colours != 2)
+      throw std::invalid_argument("geomint::analysis::bseries::tree_set: colours must be 1 or 2");
+    const int limit = colours == 1 ? max_tree_order_one_colour : max_tree_order_two_colours;
+    if (max_order < 1 || max_order > limit)
+      throw std::invalid_argument("geomint::analysis::bseries::tree_set: max_order must be in 1.." +
+                                  std::to_string(limit) + " for " + std::to_string(colours) +
+                                  " colour(s)");
+    first_.assign(static_cast<std::size_t>(max_order) + 2, 0);
+    for (int n = 1; n <= max_order; ++n) {
+      first_[static_cast<std::size_t>(n)] = size();
+      for (int colour = 0; colour < colours; ++colour) {
+        std::vector<int> subtrees;
+        add_trees(n, colour, n - 1, 0, subtrees);
+      }
+    }
+    first_[static_cast<std::size_t>(max_order) + 1] = size();
+  }
+
+  int max_order() const { return max_order_; }
+  int colours() const { return colours_; }
+  int size() const { return static_cast<int>(trees_.size()); }
+  const rooted_tree& operator[](int t) const { return trees_.at(static_cast<std::size_t>(t)); }
+  const std::vector<rooted_tree>& trees() const { return trees_; }
+  /// Index of the first tree of order n (n = max_order + 1 gives size()).
+  int first(int n) const { return first_.at(static_cast<std::size_t>(n)); }
+  /// Number of trees of order n.
+  int count(int n) const { return first(n + 1) - first(n); }
+  /// Number of trees of order n whose root has the given colour.
+  int count(int n, int colour) const {
+    int k = 0;
+    for (int t = first(n); t < first(n + 1); ++t) k += trees_[static_cast<std::size_t>(t)].colour == colour;
+    return k;
+  }
+  /// The edge cuts of tree t (empty for a single vertex).
+  const std::vector<edge_cut>& cuts(int t) const { return cuts_.at(static_cast<std::size_t>(t)); }
+
+  /// Index of the tree with this root colour and these subtrees (any order), -1 if its order
+  /// exceeds max_order.
+  int find(int colour, std::vector<int> subtrees) const {
+    std::sort(subtrees.begin(), subtrees.end());
+    const auto it = index_.find({colour, subtrees});
+    return it == index_.end() ? -1 : it->second;
+  }
+  /// The single vertex of a colour.
+  int leaf(int colour) const { return find(colour, {}); }
+  /// The Butcher product u o v: v grafted as a new subtree onto the root of u (HLW section III.1;
+  /// the product of the symplecticity conditions, HLW section IX.9); -1 if |u| + |v| exceeds max_order.
+  int butcher_product(int u, int v) const {
+    std::vector<int> subtrees = (*this)[u].subtrees;
+    (void)(*this)[v];
+    subtrees.push_back(v);
+    return find((*this)[u].colour, std::move(subtrees));
+  }
+
+ private:
+  /// Appends every tree of order n with this root colour whose subtrees, beyond `subtrees`, have
+  /// indices >= from and orders summing to `remaining`.
+  void add_trees(int n, int colour, int remaining, int from, std::vector<int>& subtrees) {
+    if (remaining == 0) {
+      append(n, colour, subtrees);
+      return;
+    }
+    for (int u = from; u < first(n); ++u) {
+      if (trees_[static_cast<std::size_t>(u)].order > remaining) break;  // trees are by order
+      subtrees.push_back(u);
+      add_trees(n, colour, remaining - trees_[static_cast<std::size_t>(u)].order, u, subtrees);
+      subtrees.pop_back();
+    }
+  }
+
+  void append(int n, int colour, const std::vector<int>& subtrees) {
+    rooted_tree t;
+    t.order = n;
+    t.colour = colour;
+    t.subtrees = subtrees;
+    t.gamma = n;
+    std::int64_t run = 0;
+    for (std::size_t i = 0; i < subtrees.size(); ++i) {
+      const rooted_tree& u = trees_[static_cast<std::size_t>(subtrees[i])];
+      t.gamma *= u.gamma;
+      run = (i > 0 && subtrees[i] == subtrees[i - 1]) ? run + 1 : 1;
+      t.sigma *= run * u.sigma;  // (multiplicity)! built up one factor per repeat
+    }
+    const int id = size();
+    index_.emplace(std::make_pair(colour, subtrees), id);
+    trees_.push_back(std::move(t));
+    cuts_.push_back(make_cuts(id));
+  }
+
+  /// The edge cuts of tree id: the edges from the root to each subtree, and the edges inside
+  /// each subtree (from that subtree's cuts).
+  std::vector<edge_cut> make_cuts(int id) const {
+    const rooted_tree& t = trees_[static_cast<std::size_t>(id)];
+    std::map<std::pair<int, int>, int> found;
+    for (std::size_t i = 0; i < t.subtrees.size(); ++i) {
+      if (i > 0 && t.subtrees[i] == t.subtrees[i - 1]) continue;
+      const int u = t.subtrees[i];
+      const int copies = static_cast<int>(std::count(t.subtrees.begin(), t.subtrees.end(), u));
+      std::vector<int> rest = t.subtrees;
+      rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
+      found[{find(t.colour, rest), u}] += copies;
+      for (const edge_cut& inner : cuts_[static_cast<std::size_t>(u)]) {
+        std::vector<int> replaced = rest;
+        replaced.push_back(inner.root_part);
+        found[{find(t.colour, replaced), inner.cut_part}] += copies * inner.multiplicity;
+      }
+    }
+    std::vector<edge_cut> out;
+    for (const auto& [parts, multiplicity] : found) out.push_back({parts.first, parts.second, multiplicity});
+    return out;
+  }
+
+  int max_order_;
+  int colours_;
+  std::vector<rooted_tree> trees_;
+  std::vector<std::vector<edge_cut>> cuts_;
+  std::vector<int> first_;
+  std::map<std::pair<int, std::vector<int>>, int> index_;
+};
+
+}  // namespace geomint::analysis::bseries

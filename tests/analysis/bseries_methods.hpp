@@ -1,0 +1,40 @@
+#pragma once
+/// Tableaux of the B-series tests, exact over cpp_rational (as printed in Hairer, Norsett, Wanner,
+/// Solving ODEs I, section II.1; Hairer, Wanner, Solving ODEs II, section IV.5; Hairer, Lubich,
+/// Wanner, Geometric Numerical Integration, 2nd ed. 2006, section II.2). Lobatto IIIB with
+/// s = 2 does not satisfy c_i = sum_j a_ij; c is unused by the series.
+#include <boost/multiprecision/cpp_int.hpp>
+
+#include "geomint/analysis/bseries/series.hpp"
+
+namespace bseries_test_methods {
+
+using Q = boost::multiprecision::cpp_rational;
+using geomint::analysis::bseries::rk_tableau;
+using geomint::analysis::bseries::prk_tableau;
+
+inline Q q(int p, int r = 1) { return Q(p) / Q(r); }
+
+
+inline rk_tableau<Q> explicit_euler() { return {{q(0)}, {{q(0)}}, {q(1)}}; }
+inline rk_tableau<Q> implicit_midpoint() { return {{q(1, 2)}, {{q(1, 2)}}, {q(1)}}; }
+inline rk_tableau<Q> classical_rk4() {
+  return {{q(0), q(1, 2), q(1, 2), q(1)},
+          {{q(0), q(0), q(0), q(0)}, {q(1, 2), q(0), q(0), q(0)}, {q(0), q(1, 2), q(0), q(0)}, {q(0), q(0), q(1), q(0)}},
+          {q(1, 6), q(1, 3), q(1, 3), q(1, 6)}};
+}
+inline rk_tableau<Q> radau_iia_2() { return {{q(1, 3), q(1)}, {{q(5, 12), q(-1, 12)}, {q(3, 4), q(1, 4)}}, {q(3, 4), q(1, 4)}}; }
+inline rk_tableau<Q> lobatto_iiia_3() {
+  return {{q(0), q(1, 2), q(1)},
+          {{q(0), q(0), q(0)}, {q(5, 24), q(1, 3), q(-1, 24)}, {q(1, 6), q(2, 3), q(1, 6)}},
+          {q(1, 6), q(2, 3), q(1, 6)}};
+}
+inline rk_tableau<Q> lobatto_iiib_3() {
+  return {{q(0), q(1, 2), q(1)},
+          {{q(1, 6), q(-1, 6), q(0)}, {q(1, 6), q(1, 3), q(0)}, {q(1, 6), q(5, 6), q(0)}},
+          {q(1, 6), q(2, 3), q(1, 6)}};
+}
+inline rk_tableau<Q> lobatto_iiia_2() { return {{q(0), q(1)}, {{q(0), q(0)}, {q(1, 2), q(1, 2)}}, {q(1, 2), q(1, 2)}}; }
+inline rk_tableau<Q> lobatto_iiib_2() { return {{q(0), q(1)}, {{q(1, 2), q(0)}, {q(1, 2), q(0)}}, {q(1, 2), q(1, 2)}}; }
+
+}  // namespace bseries_test_methods
