@@ -52,6 +52,7 @@
 #include "geomint/methods/composition.hpp"
 #include "geomint/methods/nystrom_form.hpp"
 #include "geomint/methods/tableau_method.hpp"
+#include "geomint/methods/tableau_file.hpp"
 // lie groups and the geometrically exact beam
 #include "geomint/lie/so3.hpp"
 #include "geomint/lie/se3.hpp"
