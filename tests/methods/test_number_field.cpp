@@ -74,3 +74,18 @@ TEST_CASE("exact rationals of any size convert at the scalar's precision", "[met
   CHECK(rational_to<double>(exact_rational(1, 3)) == 1.0 / 3.0);
   CHECK(rational_to<T>(exact_rational(1, 3)) == T(1) / T(3));
 }
+
+TEMPLATE_TEST_CASE("number field: r in every scalar at its full precision", "[methods]", double, long double,
+                   cpp_bin_float_50, geomint::test::cpp_bin_float_100) {
+  using T = TestType;
+  using std::abs;
+  using std::sqrt;
+  // sqrt 15 and its square: r by bisection in T from the rational bracket, against T's sqrt.
+  const auto r = field_element::generator(field_of({-15, 0, 1}));
+  const T expected = sqrt(T(15));
+  CHECK(abs(T(r.to<T>() - expected)) <= eps_tol<T>(2) * expected);
+  // An element: (3 - r)/6 at r = sqrt 15, to a few roundings of its terms (3 + r)/6.
+  const field_element x = (field_element(3) - r) / field_element(6);
+  const T value = (T(3) - expected) / T(6);
+  CHECK(abs(T(x.to<T>() - value)) <= eps_tol<T>(4) * (T(3) + expected) / T(6));
+}
