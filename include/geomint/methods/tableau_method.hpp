@@ -71,8 +71,6 @@ class tableau_engine {
   }
 
   const nystrom_form<T>& form() const { return f_; }
-  /// Whether the step is explicit on Sys.
-  bool is_explicit() const { return natural_system<Sys> ? f_.explicit_positions : f_.explicit_velocities; }
 
   /// (q, p) -> (q1, p1) (the engine contract of integrator.hpp); `solution` (if not null)
   /// receives the stage unknowns; `carry` selects compensated summation. On failure q1, p1 and
@@ -87,6 +85,12 @@ class tableau_engine {
   }
 
  private:
+  /// sum_j w_j X_j (the end update's sums).
+  V weighted(const std::vector<T>& w, const stage_values& x) const {
+    V out = V::Zero();
+    for (int j = 0; j < s_; ++j) out += w[static_cast<std::size_t>(j)] * x.col(j);
+    return out;
+  }
   /// sum_j W(i, j) X_j.
   template <class W>
   V combine(const W& w, int i, const stage_values& x) const {
@@ -154,11 +158,7 @@ class tableau_engine {
       if (!st) return st;
       g = Eigen::Map<const stage_values>(z.data(), n, s_);
     }
-    V bbar_sum = V::Zero(), b_sum = V::Zero();
-    for (int j = 0; j < s_; ++j) {
-      bbar_sum += f_.bbar[static_cast<std::size_t>(j)] * g.col(j);
-      b_sum += f_.b[static_cast<std::size_t>(j)] * g.col(j);
-    }
+    const V bbar_sum = weighted(f_.bbar, g), b_sum = weighted(f_.b, g);
     const V dq = T(tau * f_.d) * v + h2 * inverse_mass(bbar_sum);
     const V dp = tau * b_sum;
     commit(q, p, dq, dp, q1, p1, carry);
@@ -219,11 +219,7 @@ class tableau_engine {
       if (!st) return st;
       a = Eigen::Map<const stage_values>(z.data(), n, s_);
     }
-    V bbar_sum = V::Zero(), b_sum = V::Zero();
-    for (int j = 0; j < s_; ++j) {
-      bbar_sum += f_.bbar[static_cast<std::size_t>(j)] * a.col(j);
-      b_sum += f_.b[static_cast<std::size_t>(j)] * a.col(j);
-    }
+    const V bbar_sum = weighted(f_.bbar, a), b_sum = weighted(f_.b, a);
     const V dq = T(tau * f_.d) * v + h2 * bbar_sum;
     const V v1 = v + tau * b_sum;
     // p1 from the Legendre map at the new point: a value, not an increment (its carry is zero).
