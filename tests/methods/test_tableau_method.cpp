@@ -53,6 +53,35 @@ struct gauss3 {
   }
 };
 
+/// The 2-stage Gauss Nystrom collocation method for q'' = F(q, q'): the RKN coefficients of
+/// gauss2 and ap = the Gauss Runge-Kutta matrix, ap_ij = int_0^{c_i} l_j(u) du
+/// (Hairer, Norsett & Wanner I, Table II.7.3: 1/4, 1/4 - sqrt 3/6; 1/4 + sqrt 3/6, 1/4).
+struct gauss2_nystrom {
+  static auto tableau() {
+    const auto rkn = gauss2::tableau();
+    const F r = generator({-3, 0, 1});  // sqrt 3
+    return methods::make_nystrom<F>({rkn.c[0], rkn.c[1]}, {{rkn.a[0][0], rkn.a[0][1]}, {rkn.a[1][0], rkn.a[1][1]}},
+                                    {{q(1, 4), q(1, 4) - r / 6}, {q(1, 4) + r / 6, q(1, 4)}}, {rkn.bbar[0], rkn.bbar[1]},
+                                    {rkn.b[0], rkn.b[1]});
+  }
+};
+
+/// The implicit midpoint rule as a 1-stage rk tableau (c = 1/2, a = 1/2, b = 1): on a natural
+/// system in (q, p) the map q1 = q + h M^{-1} (p + p1)/2, p1 = p - h grad V((q + q1)/2), which is
+/// the midpoint variational integrator (its discrete Euler-Lagrange equations; Marsden & West
+/// 2001, docs/references.md).
+struct implicit_midpoint {
+  static auto tableau() { return methods::make_rk<R>({R(1, 2)}, {{R(1, 2)}}, {1}); }
+};
+
+/// Stormer-Verlet as the 2-stage Lobatto IIIA-IIIB pair (Hairer, Lubich & Wanner 2006, section II.2.2).
+struct lobatto_pair {
+  static auto tableau() {
+    return methods::make_prk<R>({0, 1}, {{0, 0}, {R(1, 2), R(1, 2)}}, {R(1, 2), R(1, 2)}, {{R(1, 2), 0}, {R(1, 2), 0}},
+                                {R(1, 2), R(1, 2)});
+  }
+};
+
 /// The classical Runge-Kutta method of order 4 (Kutta 1901, as printed in Hairer, Norsett &
 /// Wanner I, section II.1; docs/references.md).
 struct rk4 {
@@ -172,6 +201,26 @@ TEMPLATE_TEST_CASE("tableau_method: the Gauss RKN tableaux over Q(sqrt 3) and Q(
         newton_tolerance<T>());
   vec<T, 1> q1(T(2)), v1(T(0));
   CHECK(map_difference<methods::tableau_method<gauss3>, lpf<4, gauss_interior>>(systems::pendulum{}, q1, v1, tau, 10) <=
+        newton_tolerance<T>());
+}
+
+TEMPLATE_TEST_CASE("tableau_method: a prk and an implicit rk tableau are the Stormer-Verlet and midpoint maps",
+                   "[methods]", double, cpp_bin_float_50) {
+  using T = TestType;
+  const T tau = T(1) / T(10);
+  vec<T, 2> q2(T(1) / T(2), T(0)), v2(T(0), T(3) / T(2));
+  CHECK(map_difference<methods::tableau_method<lobatto_pair>, trapezoidal_vi>(systems::kepler{}, q2, v2, tau, 20) <=
+        newton_tolerance<T>());
+  CHECK(map_difference<methods::tableau_method<implicit_midpoint>, midpoint_vi>(systems::kepler{}, q2, v2, tau, 20) <=
+        newton_tolerance<T>());
+}
+
+TEMPLATE_TEST_CASE("tableau_method: the Gauss Nystrom tableau on a Lagrangian that is not natural is lpf on Gauss-interior nodes",
+                   "[methods]", double, cpp_bin_float_50) {
+  using T = TestType;
+  const T tau = T(1) / T(10);
+  vec<T, 2> q2(T(1), T(0)), v2(T(0), T(1));
+  CHECK(map_difference<methods::tableau_method<gauss2_nystrom>, lpf<3, gauss_interior>>(systems::charged{}, q2, v2, tau, 10) <=
         newton_tolerance<T>());
 }
 
