@@ -12,7 +12,8 @@
 
 namespace geomint::methods {
 
-/// Converts coefficients to T; remembers r in T for the field it last met.
+/// Converts coefficients to T; remembers r in T for the field it last met (one converter per
+/// thread).
 template <class T>
 class coefficient_converter {
  public:
@@ -23,7 +24,7 @@ class coefficient_converter {
     return rational_to<T>(exact_rational(boost::multiprecision::cpp_int(x.num.str()), boost::multiprecision::cpp_int(x.den().str())));
   }
   T operator()(const exact_rational& x) const { return rational_to<T>(x); }
-  T operator()(const field_element& x) {
+  T operator()(const field_element& x) const {
     if (!x.field()) return rational_to<T>(x.rational_value());
     if (x.field() != field_) {
       field_ = x.field();
@@ -33,8 +34,8 @@ class coefficient_converter {
   }
 
  private:
-  std::shared_ptr<const algebraic_field> field_;
-  T root_{};
+  mutable std::shared_ptr<const algebraic_field> field_;
+  mutable T root_{};
 };
 
 }  // namespace geomint::methods
