@@ -40,3 +40,5 @@ foreach(_case
   geomint_cli_test(geomint_cli_run_tableau_bad_${_name} 2 "${_regex}.*usage: geomint-run"
                    $<TARGET_FILE:geomint-run> --tableau ${CMAKE_CURRENT_BINARY_DIR}/bad_${_name}.tableau)
 endforeach()
+geomint_cli_test(geomint_cli_run_tableau_and_m 2 "--m, --nodes and --basis apply to the built-in schemes, not to --tableau.*usage: geomint-run"
+                 $<TARGET_FILE:geomint-run> --m 3 --tableau ${_tableaux}/gauss2.tableau)

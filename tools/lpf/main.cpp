@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
   constexpr long max_count = 1'000'000'000'000L;  // the stated bound of --steps and --every
   options o;
   bool nodes_or_basis_given = false;  // --nodes and --basis choose among the lpf schemes only
-  bool scheme_or_m_given = false;     // --scheme and --m choose a built-in scheme: not with --tableau
+  bool scheme_given = false, m_given = false;  // --scheme and --m choose a built-in scheme: not with --tableau
   cli::parser cl("geomint-run", usage);
   cl.value("--system", [&](const std::string& v) {
       std::vector<std::string> systems = geomint::tools::free_systems();
@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     })
       .value("--scheme", [&](const std::string& v) {
         o.scheme = cli::parse_choice("--scheme", v, {"lpf", "lpf-fixed-point", "midpoint", "trapezoidal", "galerkin", "paper23"});
-        scheme_or_m_given = true;
+        scheme_given = true;
       })
       .value("--tableau", [&](const std::string& v) { o.tableau = v; })
       .value("--nodes", [&](const std::string& v) {
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
       .value("--digits", [&](const std::string& v) { o.digits = std::stoi(cli::parse_choice("--digits", v, {"16", "50", "100"})); })
       .value("--m", [&](const std::string& v) {
         o.m = cli::parse_integer<int>("--m", v, 2, 16);
-        scheme_or_m_given = true;
+        m_given = true;
       })
       .value("--steps", [&](const std::string& v) { o.steps = cli::parse_integer<long>("--steps", v, 0, max_count); })
       .value("--every", [&](const std::string& v) { o.every = cli::parse_integer<long>("--every", v, 1, max_count); })
@@ -107,8 +107,8 @@ int main(int argc, char** argv) {
       .toggle("--growth", [&] { o.growth = true; });
   if (const auto done = cl.parse(argc, argv)) return *done;
   if (!o.tableau.empty()) {
-    if (scheme_or_m_given) return cl.fail("--scheme and --tableau exclude each other (and --m applies to --scheme only)");
-    if (nodes_or_basis_given) return cl.fail("--nodes and --basis apply to --scheme lpf only, not to --tableau");
+    if (scheme_given) return cl.fail("--scheme and --tableau exclude each other");
+    if (m_given || nodes_or_basis_given) return cl.fail("--m, --nodes and --basis apply to the built-in schemes, not to --tableau");
     if (o.system == "circle" || o.system == "spherical")
       return cl.fail("--tableau runs on the free systems only, not on the constrained system " + o.system);
   }
