@@ -55,7 +55,8 @@ struct gauss3 {
 
 /// The 2-stage Gauss Nystrom collocation method for q'' = F(q, q'): the RKN coefficients of
 /// gauss2 and ap = the Gauss Runge-Kutta matrix, ap_ij = int_0^{c_i} l_j(u) du
-/// (Hairer, Norsett & Wanner I, Table II.7.3: 1/4, 1/4 - sqrt 3/6; 1/4 + sqrt 3/6, 1/4).
+/// = (1/4, 1/4 - sqrt 3/6; 1/4 + sqrt 3/6, 1/4), the Gauss method of order 4 (Hammer &
+/// Hollingsworth; Hairer, Norsett & Wanner I, section II.7).
 struct gauss2_nystrom {
   static auto tableau() {
     const auto rkn = gauss2::tableau();
@@ -262,6 +263,11 @@ TEST_CASE("tableau_method: failures are reported through step_status", "[methods
   const auto before = s.q;
   CHECK(I.try_step(s).reason == step_failure::no_convergence);
   CHECK(s.q == before);
+  // The same on a Lagrangian that is not natural (stage accelerations, Euler-Lagrange residual).
+  integrator<methods::tableau_method<gauss2_nystrom>, uniform_field, double> G(uniform_field{}, 1.0);
+  G.options().max_iterations = 1;
+  auto g = G.initial_state(vec<double, 2>(1.0, 0.0), vec<double, 2>(0.0, 1.0));
+  CHECK(G.try_step(g).reason == step_failure::no_convergence);
   // An explicit tableau whose force is not finite at a stage (Kepler at the origin).
   integrator<methods::tableau_method<verlet>, systems::kepler, double> K(systems::kepler{}, 0.1);
   auto at_origin = K.initial_state(vec<double, 2>(0.0, 0.0), vec<double, 2>(1.0, 0.0));
