@@ -18,7 +18,7 @@ template <class T>
 class coefficient_converter {
  public:
   T operator()(const T& x) const { return x; }
-  T operator()(const rational& x) const { return T(x.num) / T(x.den); }
+  T operator()(const rational& x) const { return x.template to<T>(); }
   template <int L>
   T operator()(const big_rational<L>& x) const {
     return rational_to<T>(exact_rational(boost::multiprecision::cpp_int(x.num.str()), boost::multiprecision::cpp_int(x.den().str())));
