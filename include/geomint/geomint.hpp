@@ -53,6 +53,7 @@
 #include "geomint/methods/nystrom_form.hpp"
 #include "geomint/methods/tableau_method.hpp"
 #include "geomint/methods/tableau_file.hpp"
+#include "geomint/methods/tableau_stepper.hpp"
 // lie groups and the geometrically exact beam
 #include "geomint/lie/so3.hpp"
 #include "geomint/lie/se3.hpp"

@@ -25,7 +25,6 @@
 
 #include "geomint/core/dispatch.hpp"
 #include "geomint/integrator.hpp"
-#include "geomint/methods/tableau_method.hpp"
 #include "geomint/schemes/lpf_fixed_point.hpp"
 #include "geomint/solvers/phase_state.hpp"
 
@@ -203,18 +202,6 @@ template <class Scheme, class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_scheme_stepper(const Sys& sys = Sys{}) {
   return std::make_unique<detail::engine_stepper_of<Scheme, Sys, T>>(sys, typename Scheme::template engine<Sys, T>(sys),
                                                                      Scheme::name());
-}
-
-/// The stepper of a method given as data (a tableau of any kind or a composition in its Nystrom
-/// form over exact coefficients, methods/nystrom_form.hpp; e.g. read from a tableau file) on
-/// `sys`, its coefficients converted to T at T's full precision. std::invalid_argument if the
-/// method needs a natural system (rkn, prk) and Sys is not one.
-template <class Sys, class T, class K>
-std::unique_ptr<any_stepper<T>> make_tableau_stepper(const methods::nystrom_form<K>& form, const Sys& sys = Sys{}) {
-  using engine = methods::detail::tableau_engine<Sys, T>;
-  const std::string name = (form.name.empty() ? std::string("tableau") : form.name) + " (" +
-                           std::string(methods::to_string(form.kind)) + ", " + std::to_string(form.stages) + " stages)";
-  return std::make_unique<engine_stepper<engine, Sys, T>>(sys, engine(sys, methods::to_scalar<T>(form)), name);
 }
 
 /// The stepper named by `spec` on `sys`; std::invalid_argument for an unknown scheme, node

@@ -18,6 +18,7 @@
 #include "cli.hpp"
 #include "energy_growth.hpp"
 #include "geomint/methods/tableau_file.hpp"
+#include "tableau_stepper.hpp"
 #include "run.hpp"
 #include "stepper.hpp"
 
