@@ -46,6 +46,15 @@
 #include "geomint/integrator.hpp"
 #include "geomint/constrained_integrator.hpp"
 #include "geomint/stepper.hpp"
+// methods as data: exact coefficients, tableaux of every class, their runnable form, the scheme over them
+#include "geomint/methods/number_field.hpp"
+#include "geomint/methods/coefficients.hpp"
+#include "geomint/methods/tableau.hpp"
+#include "geomint/methods/composition.hpp"
+#include "geomint/methods/nystrom_form.hpp"
+#include "geomint/methods/tableau_method.hpp"
+#include "geomint/methods/tableau_file.hpp"
+#include "geomint/methods/tableau_stepper.hpp"
 // lie groups and the geometrically exact beam
 #include "geomint/lie/so3.hpp"
 #include "geomint/lie/se3.hpp"

@@ -13,7 +13,7 @@ namespace {
 const char* usage =
     "usage: geomint-run [--system harmonic|pendulum|kepler|charged|circle|spherical|henon-heiles|\n"
     "                             spring-pendulum|double-pendulum|toda|outer-solar|arenstorf]\n"
-    "                   [--scheme lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin|paper23]\n"
+    "                   [--scheme lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin|paper23 | --tableau FILE]\n"
     "                   [--nodes equispaced|lobatto|chebyshev|gauss-interior (or gauss_lobatto, ...)]\n"
     "                   [--basis lagrange|bernstein]\n"
     "                   [--m M (2..16)] [--tau T (> 0)] [--steps N] [--every K]\n"
@@ -36,6 +36,11 @@ const char* usage =
     "(the paper's scheme (23) as printed); spherical (unit spherical pendulum, f = |q|^2 - 1;\n"
     "q0=(sin,0,-cos)(pi/4), p0=(0,0.8,0)) with --scheme lpf. Their CSV adds a constraint column,\n"
     "max |f_l(q)|; initial data off the constraint or with a normal velocity are rejected.\n"
+    "--tableau FILE integrates a free built-in system (harmonic, pendulum, kepler, charged) with the\n"
+    "method written in FILE (an rk, prk, rkn or nystrom tableau with exact entries, optionally over\n"
+    "a field Q(r); docs/guide/tableau_files.md), in the --digits chosen; it excludes --scheme,\n"
+    "--nodes, --basis and --m, and rkn and prk tableaux need a natural system (not charged). A\n"
+    "malformed file is a usage error naming the file and line.\n"
     "--compensated adds the increments of q and p with compensated summation (free systems).\n"
     "--growth fits the growth of the energy error (free systems; to stderr with --csv): the RMS\n"
     "of |E - E0| over the windows of steps [2^j, 2^(j+1)), and the least-squares slope of log RMS\n"
@@ -66,6 +71,7 @@ int main(int argc, char** argv) {
   constexpr long max_count = 1'000'000'000'000L;  // the stated bound of --steps and --every
   options o;
   bool nodes_or_basis_given = false;  // --nodes and --basis choose among the lpf schemes only
+  bool scheme_given = false, m_given = false;  // --scheme and --m choose a built-in scheme: not with --tableau
   cli::parser cl("geomint-run", usage);
   cl.value("--system", [&](const std::string& v) {
       std::vector<std::string> systems = geomint::tools::free_systems();
@@ -74,7 +80,9 @@ int main(int argc, char** argv) {
     })
       .value("--scheme", [&](const std::string& v) {
         o.scheme = cli::parse_choice("--scheme", v, {"lpf", "lpf-fixed-point", "midpoint", "trapezoidal", "galerkin", "paper23"});
+        scheme_given = true;
       })
+      .value("--tableau", [&](const std::string& v) { o.tableau = v; })
       .value("--nodes", [&](const std::string& v) {
         o.nodes = cli::parse_node_family("--nodes", v);
         nodes_or_basis_given = true;
@@ -84,7 +92,10 @@ int main(int argc, char** argv) {
         nodes_or_basis_given = true;
       })
       .value("--digits", [&](const std::string& v) { o.digits = std::stoi(cli::parse_choice("--digits", v, {"16", "50", "100"})); })
-      .value("--m", [&](const std::string& v) { o.m = cli::parse_integer<int>("--m", v, 2, 16); })
+      .value("--m", [&](const std::string& v) {
+        o.m = cli::parse_integer<int>("--m", v, 2, 16);
+        m_given = true;
+      })
       .value("--steps", [&](const std::string& v) { o.steps = cli::parse_integer<long>("--steps", v, 0, max_count); })
       .value("--every", [&](const std::string& v) { o.every = cli::parse_integer<long>("--every", v, 1, max_count); })
       .value("--tau", [&](const std::string& v) { o.tau = cli::checked_real_text("--tau", v, cli::real_bound::positive); })
@@ -95,6 +106,12 @@ int main(int argc, char** argv) {
       .toggle("--compensated", [&] { o.compensated = true; })
       .toggle("--growth", [&] { o.growth = true; });
   if (const auto done = cl.parse(argc, argv)) return *done;
+  if (!o.tableau.empty()) {
+    if (scheme_given) return cl.fail("--scheme and --tableau exclude each other");
+    if (m_given || nodes_or_basis_given) return cl.fail("--m, --nodes and --basis apply to the built-in schemes, not to --tableau");
+    if (o.system == "circle" || o.system == "spherical")
+      return cl.fail("--tableau runs on the free systems only, not on the constrained system " + o.system);
+  }
   if (nodes_or_basis_given && o.scheme != "lpf")
     return cl.fail("--nodes and --basis apply to --scheme lpf only, not to --scheme " + o.scheme +
                    (o.scheme == "lpf-fixed-point" ? " (Gauss-interior nodes by construction)" : ""));

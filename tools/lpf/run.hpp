@@ -9,6 +9,7 @@ namespace geomint::run {
 struct options {
   std::string system = "harmonic";
   std::string scheme = "lpf";
+  std::string tableau;  ///< --tableau FILE: the method of a tableau file instead of a built-in scheme
   std::string nodes = "equispaced";
   std::string basis = "lagrange";
   int m = 2;

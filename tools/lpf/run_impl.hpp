@@ -18,6 +18,8 @@
 #include "cli.hpp"
 #include "energy_growth.hpp"
 #include "progress.hpp"
+#include "geomint/methods/tableau_file.hpp"
+#include "tableau_stepper.hpp"
 #include "run.hpp"
 #include "stepper.hpp"
 
@@ -78,7 +80,11 @@ int run_free_system(const options& o) {
   spec.nodes = o.nodes;
   spec.basis = o.basis;
   spec.m = o.m;
-  const auto stepper = tools::make_stepper<T>(o.system, spec);
+  // --tableau FILE: the method of the file (a malformed file is a tableau_file_error naming its
+  // line, an std::invalid_argument: a usage error).
+  const auto stepper = o.tableau.empty()
+                           ? tools::make_stepper<T>(o.system, spec)
+                           : tools::make_tableau_stepper<T>(o.system, methods::nystrom_form_of(methods::read_tableau_file(o.tableau)));
   stepper->set_monitor(run_monitor<T>(o));
   const int n = stepper->dof();
   const T tau = parse_scalar<T>(o.tau);
