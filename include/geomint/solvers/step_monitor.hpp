@@ -86,7 +86,7 @@ T fastest_local_rate(const Sys& sys, const vec<T, Sys::dof>& q, const vec<T, Sys
   using dense = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
   using std::sqrt;
   const T nan = std::numeric_limits<T>::quiet_NaN();
-  mat<T, n> aq, av;
+  mat<T, n> aq;
   if constexpr (natural_system<Sys>) {
     const hessian_data<T, n> h = D::hessian(sys, q, qdot);
     const mat<T, n> M = Sys::template mass_matrix<T>();
@@ -105,6 +105,7 @@ T fastest_local_rate(const Sys& sys, const vec<T, Sys::dof>& q, const vec<T, Sys
       if (!solve_small<T, n>(h.Lvv, vec<T, n>(h.Lq - h.Lvq * qdot), a)) return nan;
     }
     const el_data<T, n> e = D::euler_lagrange(sys, q, qdot, a);
+    mat<T, n> av;
     for (int j = 0; j < n; ++j) {
       vec<T, n> cq, cv;
       if (!solve_small<T, n>(e.Ea, vec<T, n>(-e.Ex.col(j)), cq) || !solve_small<T, n>(e.Ea, vec<T, n>(-e.Ev.col(j)), cv))
