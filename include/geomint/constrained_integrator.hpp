@@ -11,6 +11,7 @@
 #include "geomint/linalg/lu_small.hpp"
 #include "geomint/mechanics/constraint.hpp"
 #include "geomint/schemes/constrained_lpf.hpp"
+#include "geomint/schemes/resolution.hpp"
 #include "geomint/schemes/step_path.hpp"
 #include "geomint/solvers/phase_state.hpp"
 
@@ -38,10 +39,13 @@ class constrained_integrator {
   }
 
   const T& tau() const { return tau_; }
-  /// The optional step monitor (off by default; see step_monitor.hpp). Validated when set.
+  /// The optional step monitor (off by default; see step_monitor.hpp). Validated when set; a
+  /// max_tau_omega of 0 becomes the scheme's resolution bound (schemes/resolution.hpp), which
+  /// the monitor applies to the rate of the unconstrained Lagrangian (the constraint forces'
+  /// frequencies are not measured).
   void set_monitor(const step_monitor<T>& m) {
     m.validate();
-    monitor_ = m;
+    monitor_ = m.for_scheme(scheme_resolution_bound<Scheme, T>());
   }
 
   /// The state at t = 0 from (q_0, qdot_0). Throws std::invalid_argument when q_0 is off the
@@ -98,8 +102,7 @@ class constrained_integrator {
     const step_status st = check_step_input(s.step, tau_, s.q, s.p);
     if (!st) return st;
     vector q1, p1;
-    return finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_), q1, p1, tau_, monitor_,
-                       [this](const vector& q, const vector& p) { return energy(q, p); });
+    return finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_), q1, p1, tau_, monitor_, engine_.system());
   }
   /// One step; throws integration_error (reason and step index) on failure.
   void step(state& s) const {
@@ -126,8 +129,8 @@ class constrained_integrator {
     typename Scheme::template engine<Sys, Con, T>::unknowns z;
     const vector q0 = s.q;
     const T t0 = s.t;
-    const step_status st = finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z), q1, p1, tau_, monitor_,
-                                       [this](const vector& q, const vector& p) { return energy(q, p); });
+    const step_status st =
+        finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z), q1, p1, tau_, monitor_, engine_.system());
     if (st) out = path(t0, s.t, tau_, engine_.method().path(q0, z));
     return st;
   }

@@ -15,6 +15,7 @@
 #include "geomint/schemes/classical.hpp"
 #include "geomint/schemes/lpf.hpp"
 #include "geomint/schemes/paper_schemes.hpp"
+#include "geomint/schemes/resolution.hpp"
 #include "geomint/schemes/step_path.hpp"
 #include "geomint/solvers/phase_state.hpp"
 
@@ -50,10 +51,11 @@ class integrator {
   void set_tau(const T& tau) { tau_ = tau; }
   const Sys& system_ref() const { return sys_; }
   newton_options<T>& options() { return opt_; }
-  /// The optional step monitor (off by default; see step_monitor.hpp). Validated when set.
+  /// The optional step monitor (off by default; see step_monitor.hpp). Validated when set; a
+  /// max_tau_omega of 0 becomes the scheme's resolution bound (schemes/resolution.hpp).
   void set_monitor(const step_monitor<T>& m) {
     m.validate();
-    monitor_ = m;
+    monitor_ = m.for_scheme(scheme_resolution_bound<Scheme, T>());
   }
   const step_monitor<T>& monitor() const { return monitor_; }
   /// Compensated summation of the end update (off by default): q_{k+1} = q_k + dq and
@@ -101,8 +103,8 @@ class integrator {
     vector q1 = vector::Zero(), p1 = vector::Zero();
     phase_carry<T, n> carry1 = s.carry;
     phase_carry<T, n>* carry = compensated_ ? &carry1 : nullptr;
-    return finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, nullptr, carry), q1, p1, tau_, monitor_,
-                       [this](const vector& q, const vector& p) { return energy(q, p); }, carry);
+    return finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, nullptr, carry), q1, p1, tau_, monitor_, sys_,
+                       carry);
   }
   /// One step; throws integration_error (reason and step index) on failure.
   void step(state& s) const {
@@ -138,8 +140,8 @@ class integrator {
     const T t0 = s.t;
     phase_carry<T, n> carry1 = s.carry;
     phase_carry<T, n>* carry = compensated_ ? &carry1 : nullptr;
-    const step_status st = finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z, carry), q1, p1, tau_,
-                                       monitor_, [this](const vector& q, const vector& p) { return energy(q, p); }, carry);
+    const step_status st =
+        finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z, carry), q1, p1, tau_, monitor_, sys_, carry);
     if (st) out = Path(t0, s.t, tau_, engine_.method().path(q0, z));
     return st;
   }

@@ -26,6 +26,7 @@
 #include "geomint/core/dispatch.hpp"
 #include "geomint/integrator.hpp"
 #include "geomint/schemes/lpf_fixed_point.hpp"
+#include "geomint/schemes/resolution.hpp"
 #include "geomint/solvers/phase_state.hpp"
 
 namespace geomint {
@@ -67,10 +68,11 @@ class any_stepper {
   virtual int dof() const = 0;
   /// The scheme's name, e.g. "lpf(m=4, gauss-interior, lagrange)".
   virtual std::string name() const = 0;
-  /// The step monitor applied by try_step (off unless set; see solvers/step_monitor.hpp).
+  /// The step monitor applied by try_step (off unless set; see solvers/step_monitor.hpp). A
+  /// max_tau_omega of 0 becomes the scheme's resolution bound (schemes/resolution.hpp).
   void set_monitor(const step_monitor<T>& m) {
     m.validate();
-    monitor_ = m;
+    monitor_ = m.for_scheme(resolution_bound_);
   }
   const step_monitor<T>& monitor() const { return monitor_; }
   /// One step of size tau from (q, p); on failure q1 and p1 are untouched. A state of the wrong
@@ -89,7 +91,9 @@ class any_stepper {
   virtual vector momentum(const vector& q, const vector& qdot) const = 0;
 
  protected:
+  explicit any_stepper(const T& resolution_bound) : resolution_bound_(resolution_bound) {}
   step_monitor<T> monitor_;
+  T resolution_bound_;  ///< the scheme's bound on tau * omega_max
 };
 
 namespace detail {
@@ -118,8 +122,9 @@ class engine_stepper : public any_stepper<T> {
   using typename any_stepper<T>::vector;
 
  public:
-  engine_stepper(const Sys& sys, Engine engine, std::string name)
-      : sys_(sys), engine_(std::move(engine)), name_(std::move(name)) {}
+  /// `resolution_bound`: the scheme's bound on tau * omega_max (scheme_resolution_bound).
+  engine_stepper(const Sys& sys, Engine engine, std::string name, const T& resolution_bound)
+      : any_stepper<T>(resolution_bound), sys_(sys), engine_(std::move(engine)), name_(std::move(name)) {}
   int dof() const override { return n; }
   std::string name() const override { return name_; }
 
@@ -131,8 +136,8 @@ class engine_stepper : public any_stepper<T> {
     const step_status st = check_step_input(s.step, tau, s.q, s.p);
     if (!st) return st;
     V q1f = V::Zero(), p1f = V::Zero();
-    const step_status done = finish_step(s, engine_.one_step(s.q, s.p, tau, q1f, p1f, opt), q1f, p1f, tau, this->monitor_,
-                                         [this](const V& a, const V& b) { return energy_of(a, b); });
+    const step_status done =
+        finish_step(s, engine_.one_step(s.q, s.p, tau, q1f, p1f, opt), q1f, p1f, tau, this->monitor_, sys_);
     if (done) {
       q1 = s.q;
       p1 = s.p;
@@ -152,7 +157,7 @@ class engine_stepper : public any_stepper<T> {
     V q1f = V::Zero(), p1f = V::Zero();
     const step_status done =
         finish_step(s, engine_.one_step(s.q, s.p, tau, q1f, p1f, opt, nullptr, &carry1), q1f, p1f, tau, this->monitor_,
-                    [this](const V& a, const V& b) { return energy_of(a, b); }, &carry1);
+                    sys_, &carry1);
     if (done) {
       q1 = s.q;
       p1 = s.p;
@@ -194,14 +199,15 @@ template <class Scheme, class Sys, class T>
 class scheme_stepper final : public detail::engine_stepper_of<Scheme, Sys, T> {
  public:
   explicit scheme_stepper(const Sys& sys = Sys{})
-      : detail::engine_stepper_of<Scheme, Sys, T>(sys, typename Scheme::template engine<Sys, T>(sys), Scheme::name()) {}
+      : detail::engine_stepper_of<Scheme, Sys, T>(sys, typename Scheme::template engine<Sys, T>(sys), Scheme::name(),
+                                                  scheme_resolution_bound<Scheme, T>()) {}
 };
 
 /// The stepper of `Scheme` on `sys` as an engine_stepper (no class of its own per scheme).
 template <class Scheme, class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_scheme_stepper(const Sys& sys = Sys{}) {
-  return std::make_unique<detail::engine_stepper_of<Scheme, Sys, T>>(sys, typename Scheme::template engine<Sys, T>(sys),
-                                                                     Scheme::name());
+  return std::make_unique<detail::engine_stepper_of<Scheme, Sys, T>>(
+      sys, typename Scheme::template engine<Sys, T>(sys), Scheme::name(), scheme_resolution_bound<Scheme, T>());
 }
 
 /// The stepper named by `spec` on `sys`; std::invalid_argument for an unknown scheme, node

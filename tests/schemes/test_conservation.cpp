@@ -321,7 +321,7 @@ TEMPLATE_LIST_TEST_CASE("a failed compensated step leaves the state and its comp
   REQUIRE(((s.carry.q.array() != T(0)).any() || (s.carry.p.array() != T(0)).any()));  // something to keep
   const auto before = s;
   step_monitor<T> m = step_monitor<T>::on();
-  m.max_relative_energy_change = std::numeric_limits<T>::epsilon();
+  m.max_energy_change_ratio = std::numeric_limits<T>::epsilon();
   I.set_monitor(m);
   I.set_tau(T(1));
   const step_status st = I.try_step(s);

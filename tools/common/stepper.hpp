@@ -267,4 +267,29 @@ std::pair<dynamic_vector<T>, dynamic_vector<T>> default_initial_data(std::string
   });
 }
 
+/// The initial state (q0, p0) of a free system for the tools: q0 from `q0_text` (if not empty)
+/// or the system's default; p0 from `p0_text` (the canonical momentum, if not empty) or else
+/// dL/dqdot(q0, qdot0) with the default velocity qdot0, so that a user's position is never
+/// paired with the momentum of the default position (which would change the energy: charged
+/// from q0 = (10, 0) with the default momentum starts with E = 32067.8 instead of 0.5).
+/// std::invalid_argument naming the flag for a wrong count of values; `parse` reads one value.
+template <class T, class Parse>
+std::pair<dynamic_vector<T>, dynamic_vector<T>> default_initial_state(std::string_view system, const any_stepper<T>& stepper,
+                                                                      const std::vector<std::string>& q0_text,
+                                                                      const std::vector<std::string>& p0_text,
+                                                                      const Parse& parse) {
+  auto [q, qdot] = default_initial_data<T>(system);
+  const int n = stepper.dof();
+  auto read = [&](const std::vector<std::string>& in, dynamic_vector<T>& out, const char* flag) {
+    if (static_cast<int>(in.size()) != n)
+      throw std::invalid_argument(std::string(flag) + " needs " + std::to_string(n) + " value(s) for --system " +
+                                  std::string(system));
+    for (int i = 0; i < n; ++i) out[i] = parse(in[static_cast<std::size_t>(i)]);
+  };
+  if (!q0_text.empty()) read(q0_text, q, "--q0");
+  dynamic_vector<T> p = stepper.momentum(q, qdot);
+  if (!p0_text.empty()) read(p0_text, p, "--p0");
+  return {q, p};
+}
+
 }  // namespace geomint::tools

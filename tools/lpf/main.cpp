@@ -18,7 +18,7 @@ const char* usage =
     "                   [--basis lagrange|bernstein]\n"
     "                   [--m M (2..16)] [--tau T (> 0)] [--steps N] [--every K]\n"
     "                   [--q0 a[,b]] [--p0 a[,b]] [--digits 16|50|100] [--csv]\n"
-    "                   [--compensated] [--growth] [--no-monitor]\n"
+    "                   [--compensated] [--growth] [--estimate] [--no-monitor]\n"
     "Integrates the system with the one-step (q, p) form of the chosen scheme. With --csv prints\n"
     "step,t,q1,...,qn,p1,...,pn,energy every K steps and at the last step, in the full precision\n"
     "of the scalar (16: double, 50/100: cpp_bin_float). p is the canonical momentum dL/dqdot.\n"
@@ -31,6 +31,10 @@ const char* usage =
     "pendulum and kepler, with the m and digits of lpf.\n"
     "Defaults: harmonic q0=1,qdot0=1; pendulum q0=1,qdot0=0; kepler q0=(0.5,0),qdot0=(0,sqrt 3);\n"
     "charged q0=(1,0),qdot0=(0,1); scheme lpf, equispaced, lagrange, m=2, tau=0.1, steps=100.\n"
+    "Initial data are a position and a velocity: --q0 replaces the position; --p0 gives the\n"
+    "canonical momentum, and without it the momentum is that of the default velocity qdot0 at the\n"
+    "(possibly given) position, never the default position's momentum. --m applies to lpf,\n"
+    "lpf-fixed-point and galerkin only (an error with another scheme).\n"
     "Constrained systems: circle (L = 1/2|qdot|^2, f = |q|^2 - 1; q0=(1,0), p0=(0,1)) with --scheme\n"
     "lpf (the constrained integrator: f = 0 at every node and step, projected momenta) or paper23\n"
     "(the paper's scheme (23) as printed); spherical (unit spherical pendulum, f = |q|^2 - 1;\n"
@@ -46,6 +50,13 @@ const char* usage =
     "of |E - E0| over the windows of steps [2^j, 2^(j+1)), and the least-squares slope of log RMS\n"
     "against log t over the windows from step 1024 on (1/2: round-off as a random walk, Brouwer's\n"
     "law; 1: linear).\n"
+    "--estimate runs the same steps at tau/2 alongside and prints Richardson's estimate of the\n"
+    "global error, |z(tau) - z(tau/2)|_inf 2^p/(2^p - 1) with p a lower bound of the scheme's\n"
+    "order (free systems; a CSV column error_estimate, the summary to stderr with --csv), and\n"
+    "'coarse run' when it exceeds 1/100 of max(|q|, |p|).\n"
+    "The step monitor (on by default; --no-monitor turns it off) refuses a step that does not\n"
+    "resolve the motion (tau omega_max above the scheme's bound) or whose energy error is\n"
+    "comparable to the energy it exchanges (docs/guide/robustness.md); exit status 3.\n"
     "The problem zoo (geomint/mechanics/zoo.hpp): henon-heiles, spring-pendulum, double-pendulum,\n"
     "toda, outer-solar, arenstorf, each from its documented initial data, with a restricted scheme\n"
     "set: midpoint; lpf --nodes gauss-interior --basis lagrange --m 2..4; galerkin --m 2..3;\n"
@@ -54,8 +65,10 @@ const char* usage =
 /// Runs the chosen system and scheme in the chosen scalar; returns the exit status.
 int dispatch(const geomint::run::options& o) {
   using namespace geomint::run;
-  if ((o.system == "circle" || o.system == "spherical") && (o.compensated || o.growth))
+  const bool constrained = o.system == "circle" || o.system == "spherical";
+  if (constrained && (o.compensated || o.growth))
     throw std::invalid_argument("--compensated and --growth apply to the free systems only");
+  if (constrained && o.estimate) throw std::invalid_argument("--estimate applies to the free systems only");
   if (o.system == "circle")
     return geomint::tools::with_digits(o.digits, [&]<int D>() { return run_constrained<constrained_system::circle, D>(o); });
   if (o.system == "spherical")
@@ -104,7 +117,8 @@ int main(int argc, char** argv) {
       .toggle("--csv", [&] { o.csv = true; })
       .toggle("--no-monitor", [&] { o.monitor = false; })
       .toggle("--compensated", [&] { o.compensated = true; })
-      .toggle("--growth", [&] { o.growth = true; });
+      .toggle("--growth", [&] { o.growth = true; })
+      .toggle("--estimate", [&] { o.estimate = true; });
   if (const auto done = cl.parse(argc, argv)) return *done;
   if (!o.tableau.empty()) {
     if (scheme_given) return cl.fail("--scheme and --tableau exclude each other");
@@ -115,6 +129,9 @@ int main(int argc, char** argv) {
   if (nodes_or_basis_given && o.scheme != "lpf")
     return cl.fail("--nodes and --basis apply to --scheme lpf only, not to --scheme " + o.scheme +
                    (o.scheme == "lpf-fixed-point" ? " (Gauss-interior nodes by construction)" : ""));
+  if (m_given && o.scheme != "lpf" && o.scheme != "lpf-fixed-point" && o.scheme != "galerkin")
+    return cl.fail("--m applies to --scheme lpf, lpf-fixed-point and galerkin only, not to --scheme " + o.scheme +
+                   (o.scheme == "paper23" ? " (m = 2 by construction)" : " (no degree)"));
   try {
     return geomint::cli::finish_stdout("geomint-run", dispatch(o));
   } catch (const std::invalid_argument& e) {

@@ -22,6 +22,7 @@ struct options {
   bool monitor = true;  ///< the step monitor (geomint/solvers/step_monitor.hpp); --no-monitor turns it off
   bool compensated = false;  ///< --compensated: compensated summation of the q, p update
   bool growth = false;       ///< --growth: fit the exponent of the energy error's growth in t
+  bool estimate = false;     ///< --estimate: Richardson's estimate of the global error (run at tau/2)
 };
 
 /// The free systems (the built-in harmonic, pendulum, kepler, charged and the zoo systems of

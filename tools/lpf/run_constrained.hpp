@@ -106,7 +106,7 @@ int run_paper23(const options& o) {
   using Con = systems::unit_circle;
   const T tau = parse_scalar<T>(o.tau);
   constrained_integrator<constrained_lpf<2>, Sys, Con, T> starter(Sys{}, Con{}, tau);
-  const step_monitor<T> monitor = run_monitor<T>(o);
+  const step_monitor<T> monitor = run_monitor<T>(o).for_scheme(scheme_resolution_bound<constrained_lpf<2>, T>());
   starter.set_monitor(monitor);
   const auto [q0, p0] = constrained_initial_data<Sys, T>(o);
   auto s = starter.initial_state(q0, p0);
@@ -120,7 +120,10 @@ int run_paper23(const options& o) {
     if (const step_status st = starter.try_step(s); !st) return report_failure(st);
   }
   vec<T, 2> curr = s.q;
-  T previous_energy = energy0;
+  auto measure = [&](const vec<T, 2>& q, const vec<T, 2>& p) {
+    return measure_monitor_point<Sys, T>(Sys{}, q, p, monitor.checks_resolution());
+  };
+  monitor_point<T> previous = measure(s.q, s.p);
   for (long k = 1; k <= o.steps; ++k) {
     if (k >= 2) {
       vec<T, 2> next;
@@ -138,9 +141,10 @@ int run_paper23(const options& o) {
     const T energy = p.squaredNorm() / T(2), violation = abs(T(curr.squaredNorm() - T(1)));
     step_status checked;
     checked.step = k - 1;
-    monitor.check(previous_energy, energy, checked);
+    const monitor_point<T> current = measure(curr, p);
+    monitor.check(tau, previous, current, checked);
     if (!checked) return report_failure(checked);
-    previous_energy = energy;
+    previous = current;
     if (abs(T(energy - energy0)) > worst_energy) worst_energy = abs(T(energy - energy0));
     if (violation > worst_constraint) worst_constraint = violation;
     if (o.csv && (k % o.every == 0 || k == o.steps)) {

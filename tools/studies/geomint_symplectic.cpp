@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 
 #include "geomint/analysis/symplecticity.hpp"
 #include "study_cli.hpp"
@@ -33,8 +34,11 @@ const char* usage =
     "CSV header: system,scheme,nodes,m,tau,defect  (plus max_energy_error,energy_drift with\n"
     "--long-steps), regime. regime is 'ok', 'failed', or 'outside: ...' for a result that is no\n"
     "measurement (a defect above 1: tau far outside the scheme's regime); any case not 'ok' makes\n"
-    "the exit status 3. The step monitor (relative energy change per step <= 1/10) is on; it makes\n"
-    "a step that leaves the scheme's regime fail; --no-monitor turns it off.\n";
+    "the exit status 3. The step monitor (geomint/solvers/step_monitor.hpp: resolution tau omega_max\n"
+    "and energy change) is on; a step that leaves the scheme's regime fails the case with the\n"
+    "monitor's reason; --no-monitor turns it off. Initial data as geomint-run: --p0 is the\n"
+    "momentum, else the default velocity's momentum at --q0. --m applies to lpf,\n"
+    "lpf-fixed-point and galerkin, --nodes to lpf (an error if no selected scheme uses it).\n";
 
 struct extra_options {
   std::string tau = "0.25", long_tau;
@@ -54,33 +58,35 @@ T parse_number(const std::string& flag, const std::string& s) {
   return v;
 }
 
-/// The initial state (q0, p0) of a case in the scalar T: defaults, overridden by --q0/--p0.
+/// The initial state (q0, p0) of a case in the scalar T (tools::default_initial_state: --p0 or
+/// the default velocity's momentum at q0).
 template <class T>
 analysis::phase_vector<T> initial_state(const std::string& system, const any_stepper<T>& stepper, const extra_options& x) {
-  auto [q, qdot] = tools::default_initial_data<T>(system);
-  dynamic_vector<T> p = stepper.momentum(q, qdot);
-  const int n = stepper.dof();
-  auto read = [&](const std::vector<std::string>& in, dynamic_vector<T>& out, const char* flag) {
-    if (in.empty()) return;
-    if (static_cast<int>(in.size()) != n)
-      throw geomint::cli::usage_error(std::string(flag) + " needs " + std::to_string(n) + " value(s) for " + system);
-    for (int i = 0; i < n; ++i) out[i] = parse_number<T>(flag, in[static_cast<std::size_t>(i)]);
-  };
-  read(x.q0, q, "--q0");
-  read(x.p0, p, "--p0");
-  analysis::phase_vector<T> z(2 * n);
+  dynamic_vector<T> q, p;
+  try {
+    std::tie(q, p) = tools::default_initial_state<T>(system, stepper, x.q0, x.p0,
+                                                     [](const std::string& s) { return parse_number<T>("--q0/--p0", s); });
+  } catch (const std::invalid_argument& e) {  // a wrong count of values: a usage error
+    throw geomint::cli::usage_error(e.what());
+  }
+  analysis::phase_vector<T> z(2 * stepper.dof());
   z << q, p;
   return z;
 }
 
-/// The one-step map of a stepper as a phase_map.
+/// The one-step map of a stepper as a phase_map; the status of its last failed step goes to
+/// *failure (if given), so that a failure keeps its reason (e.g. the step monitor's criterion).
 template <class T>
-analysis::phase_map<T> as_map(const any_stepper<T>& stepper, const T& tau) {
-  return [&stepper, tau](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
+analysis::phase_map<T> as_map(const any_stepper<T>& stepper, const T& tau, step_status* failure = nullptr) {
+  return [&stepper, tau, failure](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
     const int n = stepper.dof();
     const dynamic_vector<T> q = z.head(n), p = z.tail(n);
     dynamic_vector<T> q1, p1;
-    if (!stepper.try_step(q, p, tau, q1, p1)) return false;
+    const step_status st = stepper.try_step(q, p, tau, q1, p1);
+    if (!st) {
+      if (failure) *failure = st;
+      return false;
+    }
     z1.resize(2 * n);
     z1 << q1, p1;
     return true;
@@ -121,7 +127,13 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
       const auto stepper = tools::make_stepper<T>(c.system, c.spec);
       if (x.monitor) stepper->set_monitor(step_monitor<T>::on());
       const analysis::phase_vector<T> z0 = initial_state<T>(c.system, *stepper, x);
-      const auto J = analysis::one_step_jacobian<T>(as_map<T>(*stepper, tau), z0);
+      step_status failed;
+      analysis::phase_matrix<T> J;
+      try {
+        J = analysis::one_step_jacobian<T>(as_map<T>(*stepper, tau, &failed), z0);
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error(failed ? std::string(e.what()) : std::string(e.what()) + ": " + failed.message());
+      }
       const T defect = analysis::symplectic_defect<T>(J);
       rows[i].defect = sci(defect);
       // A defect of order one is no measurement of symplecticity: the map is outside the
@@ -132,13 +144,15 @@ int run(const geomint::studies::selection& sel, const extra_options& x) {
         if (x.monitor) fast->set_monitor(step_monitor<double>::on());
         const analysis::phase_vector<double> zd = initial_state<double>(c.system, *fast, x);
         const int n = fast->dof();
+        step_status long_failure;
         const auto e = analysis::energy_behaviour<double>(
-            as_map<double>(*fast, long_tau),
+            as_map<double>(*fast, long_tau, &long_failure),
             [&](const analysis::phase_vector<double>& z) {
               return fast->energy(dynamic_vector<double>(z.head(n)), dynamic_vector<double>(z.tail(n)));
             },
             zd, long_tau, x.long_steps);
-        if (!e.ok) rows[i].failure = "long run failed after " + std::to_string(e.steps) + " steps (a step failed or left the scheme's regime)";
+        if (!e.ok)
+          rows[i].failure = "long run failed after " + std::to_string(e.steps) + " steps: " + long_failure.message();
         rows[i].max_energy = sci(e.max_error);
         rows[i].drift = sci(e.drift);
       }

@@ -31,6 +31,7 @@ struct selection {
   int m_low = 2, m_high = 2;
   int digits = 50;
   bool csv = false;
+  bool m_given = false, nodes_given = false;  ///< whether --m, --nodes were given (check_cases)
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
 
   /// Registers the flags common to the studies on the tool's parser.
@@ -46,8 +47,14 @@ struct selection {
           // "all": the schemes of every system; lpf-fixed-point (natural systems only) is named.
           schemes = v == "all" ? tools::schemes_of_every_system() : cli::parse_choice_list("--scheme", v, tools::scheme_list());
         })
-        .value("--nodes", [this](const std::string& v) { nodes = cli::parse_node_family_list("--nodes", v); })
-        .value("--m", [this](const std::string& v) { std::tie(m_low, m_high) = cli::parse_integer_range<int>("--m", v, 2, 8); })
+        .value("--nodes", [this](const std::string& v) {
+          nodes = cli::parse_node_family_list("--nodes", v);
+          nodes_given = true;
+        })
+        .value("--m", [this](const std::string& v) {
+          std::tie(m_low, m_high) = cli::parse_integer_range<int>("--m", v, 2, 8);
+          m_given = true;
+        })
         .value("--digits", [this, allowed_digits](const std::string& v) {
           digits = std::stoi(cli::parse_choice("--digits", v, allowed_digits));
         })
@@ -57,6 +64,16 @@ struct selection {
   /// Throws cli::usage_error (exit status 2) for a case whose system has no stepper for its
   /// scheme in `digits` digits: a zoo system outside its restricted scheme set, or in 100 digits.
   void check_cases() const {
+    // Options that no selected scheme uses are errors, not ignored.
+    auto any_scheme = [&](auto&& pred) { return std::any_of(schemes.begin(), schemes.end(), pred); };
+    std::string listed;
+    for (const std::string& s : schemes) listed += (listed.empty() ? "" : ",") + s;
+    if (m_given && !any_scheme([](const std::string& s) { return scheme_spec{s}.has_m(); }))
+      throw cli::usage_error("--m applies to --scheme lpf, lpf-fixed-point and galerkin only, not to --scheme " +
+                             listed);
+    if (nodes_given && !any_scheme([](const std::string& s) { return s == "lpf"; }))
+      throw cli::usage_error("--nodes applies to --scheme lpf only, not to --scheme " + listed +
+                             " (galerkin's map does not depend on nodes; lpf-fixed-point is on Gauss-interior nodes)");
     for (const study_case& c : cases()) {
       try {
         tools::with_digits(digits, [&]<int D>() { tools::check_scheme<tools::scalar_for_digits<D>>(c.system, c.spec); });

@@ -55,7 +55,8 @@ const char* usage =
     "geomint's schemes add the increments of q and p with compensated summation (Brouwer's law\n"
     "for the round-off); --plain-summation turns it off.\n"
     "--passes N: timing passes over every run, the fastest time kept (default 2): a machine that\n"
-    "slows down for seconds slows one pass, not all.\n";
+    "slows down for seconds slows one pass, not all.\n"
+    "Exit status: 0, 2 (bad command line), 3 (every run failed: no measurement), 4 (output failed).\n";
 
 }  // namespace
 
@@ -83,6 +84,11 @@ int main(int argc, char** argv) {
     else if (o.system == "outer-solar")
       rc = o.digits == 16 ? run_regime<outer_solar_problem, 16>(o) : run_regime<outer_solar_problem, 50>(o);
     else rc = o.digits == 16 ? run_regime<pendulum_problem, 16>(o) : run_regime<pendulum_problem, 50>(o);
+    if (rc < 0) {
+      std::cout.flush();
+      std::cerr << "geomint-workprecision: every run failed (no measurement; see the messages above)\n";
+      rc = geomint::cli::exit_run_failure;
+    }
     return geomint::cli::finish_stdout("geomint-workprecision", rc);
   } catch (const std::invalid_argument& e) {
     std::cerr << "geomint-workprecision: " << e.what() << "\n" << usage;

@@ -261,6 +261,8 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
   };
   for (const auto& goal : g.goals) report(goal.error, P::goals ? std::optional<double>(goal.ratio) : std::nullopt);
   for (double e : g.others) report(e, std::nullopt);
+  // A study without a single measured run is a failure, not a table (main.cpp: exit status 3).
+  if (std::all_of(all.begin(), all.end(), [&](const auto& m) { return by_method[m.name].empty(); })) return -1;
   return 0;
 }
 

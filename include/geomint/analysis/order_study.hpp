@@ -9,6 +9,9 @@
 /// p the rounded global order at the finer step of that pair. Errors within a round-off margin
 /// (10^6 eps per step taken) do not measure the scheme: the slopes then use the finest pair of
 /// steps above it, and the study fails if there is none (more digits are needed).
+///
+/// Observed slopes are a measurement only in the asymptotic regime; asymptotic_regime() below
+/// says whether a result is in it (the study tools flag every other row and exit non-zero).
 
 #include <cmath>
 #include <functional>
@@ -39,6 +42,12 @@ struct order_result {
   T local_order = std::numeric_limits<T>::quiet_NaN();   ///< observed exponent of the local error (p + 1)
   T global_order = std::numeric_limits<T>::quiet_NaN();  ///< observed order p
   T error_constant = std::numeric_limits<T>::quiet_NaN();
+  /// The successive global orders between neighbouring steps above the round-off margin, and
+  /// the index in taus of the coarser step of the first of them.
+  std::vector<T> global_orders;
+  std::size_t first_order_index = 0;
+  /// The size of the solution at t_end, max(|q|, |p|) of the reference (max norm).
+  T solution_size = std::numeric_limits<T>::quiet_NaN();
   bool ok = false;
   std::string failure;  ///< why the study stopped, if !ok
 };
@@ -69,6 +78,10 @@ order_result<T> order_study(const step_function<T>& step, const reference_functi
   dynamic_vector<T> qe, pe, q1, p1;
   reference(t_end, qe, pe);
   const dynamic_vector<T> q_end = qe, p_end = pe;
+  {
+    using std::max;
+    r.solution_size = max(T(q_end.template lpNorm<Eigen::Infinity>()), T(p_end.template lpNorm<Eigen::Infinity>()));
+  }
   for (long N : step_counts) {
     const T tau = t_end / T(N);
     // Local error: one step against the reference flow at tau.
@@ -109,8 +122,65 @@ order_result<T> order_study(const step_function<T>& step, const reference_functi
   using std::pow;
   using std::round;
   r.error_constant = r.global_errors[g] / pow(r.taus[g], round(r.global_order));
+  // The successive orders of the contiguous run of steps above the margin that ends at g.
+  std::size_t first = g;
+  while (first > 0 && r.global_errors[first - 1] > margin * T(step_counts[first - 1])) --first;
+  r.first_order_index = first;
+  for (std::size_t i = first; i < g; ++i)
+    r.global_orders.push_back(observed_slope(r.global_errors[i], r.global_errors[i + 1], r.taus[i], r.taus[i + 1]));
   r.ok = true;
   return r;
+}
+
+/// The thresholds of asymptotic_regime, in the scalar T.
+template <class T>
+struct asymptotic_criteria {
+  /// Global errors used for an order must be below this share of the solution's size: an
+  /// error comparable to the solution is no small perturbation of it (a phase error of order
+  /// one on an oscillation), so its slope is not the scheme's order; "well below" is an order
+  /// of magnitude (the consistency of successive orders below checks the rest).
+  T max_relative_error = T(1) / T(10);
+  /// At least this many steps above the round-off margin (two successive orders to compare).
+  std::size_t min_ladder = 3;
+  /// Successive global orders must agree within this, and the global order lie within it of
+  /// an integer >= 1: in the asymptotic regime e(tau) = C tau^p (1 + O(tau)), so successive
+  /// slopes converge to the integer p; a quarter of an order separates p from p +- 1 clearly.
+  T order_tolerance = T(1) / T(4);
+  /// The local order must be at least the global order plus this (local error
+  /// O(tau^(p+1)) for a global error O(tau^p); more where its leading term vanishes at z0), and
+  /// at least 2 - 1/4 (a consistent one-step map has local error O(tau^2) or smaller).
+  T local_excess = T(1) / T(2);
+};
+
+/// "ok" when the result is in the asymptotic regime by every criterion above; otherwise
+/// "outside: <reason>" (the first failed criterion). A result with r.ok false is "failed".
+template <class T>
+std::string asymptotic_regime(const order_result<T>& r, const asymptotic_criteria<T>& c = {}) {
+  using std::abs;
+  using std::round;
+  if (!r.ok) return "failed";
+  if (!is_finite(r.global_order) || !is_finite(r.local_order)) return "outside: non-finite observed order";
+  if (r.taus.size() < c.min_ladder)
+    return "outside: a ladder of " + std::to_string(r.taus.size()) + " step counts (at least " +
+           std::to_string(c.min_ladder) + " are needed)";
+  if (r.global_orders.size() + 1 < c.min_ladder)
+    return "outside: fewer than " + std::to_string(c.min_ladder) +
+           " steps with errors above round-off (add a coarser step or use more digits)";
+  // The three finest steps above round-off: those of the last two successive orders.
+  const std::size_t finest = r.first_order_index + r.global_orders.size();
+  for (std::size_t i = finest + 1 - c.min_ladder; i <= finest; ++i)
+    if (!(r.global_errors[i] <= c.max_relative_error * r.solution_size))
+      return "outside: global error not well below the solution's size (" +
+             std::to_string(static_cast<double>(r.global_errors[i] / r.solution_size)) + " of it at tau = " +
+             std::to_string(static_cast<double>(r.taus[i])) + ")";
+  const std::size_t k = r.global_orders.size();
+  if (abs(T(r.global_orders[k - 1] - r.global_orders[k - 2])) > c.order_tolerance)
+    return "outside: successive global orders disagree";
+  if (r.global_order < T(1) - c.order_tolerance) return "outside: global order below 1";
+  if (abs(T(r.global_order - round(r.global_order))) > c.order_tolerance) return "outside: non-integer global order";
+  if (r.local_order < T(2) - c.order_tolerance) return "outside: local order below 2";
+  if (r.local_order < r.global_order + c.local_excess) return "outside: local order below global order + 1";
+  return "ok";
 }
 
 }  // namespace geomint::analysis

@@ -117,12 +117,13 @@ step_status check_step_input(long k, const T& tau, const A& a, const B& b) {
   return st;
 }
 
-/// The checks after a scheme's step st from s to (q1, p1): a finite result and, when enabled,
-/// the monitor on energy(q, p); commits to s only if all pass. `carry1` (if not null) holds the
+/// The checks after a scheme's step st from s to (q1, p1) of size tau: a finite result and,
+/// when enabled, the step monitor on the system `sys` (its energy terms and local rate at both
+/// ends, step_monitor.hpp); commits to s only if all pass. `carry1` (if not null) holds the
 /// compensation terms of the new state, committed with it (compensated summation).
-template <class T, int n, class Energy>
+template <class T, int n, class Sys>
 step_status finish_step(phase_state<T, n>& s, step_status st, const vec<T, n>& q1, const vec<T, n>& p1, const T& tau,
-                        const step_monitor<T>& monitor, const Energy& energy, const phase_carry<T, n>* carry1 = nullptr) {
+                        const step_monitor<T>& monitor, const Sys& sys, const phase_carry<T, n>* carry1 = nullptr) {
   st.step = s.step;
   if (!st) return st;
   if (!all_finite(q1) || !all_finite(p1)) {
@@ -130,7 +131,9 @@ step_status finish_step(phase_state<T, n>& s, step_status st, const vec<T, n>& q
     return st;
   }
   if (monitor.enabled) {
-    monitor.check(energy(s.q, s.p), energy(q1, p1), st);
+    const bool rate = monitor.checks_resolution();
+    monitor.check(tau, measure_monitor_point<Sys, T>(sys, s.q, s.p, rate), measure_monitor_point<Sys, T>(sys, q1, p1, rate),
+                  st);
     if (!st) return st;
   }
   if (carry1)

@@ -34,11 +34,18 @@ inline std::string_view to_string(step_failure f) {
     case step_failure::non_finite_iterate: return "the iterate became non-finite (divergence)";
     case step_failure::no_convergence: return "the iteration (Newton or fixed-point) did not converge";
     case step_failure::energy_growth: return "the energy grew beyond its limit (step outside the scheme's stable regime)";
-    case step_failure::left_regime:
-      return "step left the scheme's regime (relative energy change per step above the monitor's bound; reduce tau)";
+    case step_failure::left_regime: return "step left the scheme's regime (the step monitor refused it; reduce tau)";
   }
   return "unknown";
 }
+
+/// Which criterion of the step monitor (step_monitor.hpp) refused a step.
+enum class monitor_check {
+  none,
+  non_finite,  ///< the energy or the local rate at an end of the step is not finite
+  resolution,  ///< tau * omega_max above the scheme's bound: the step does not resolve the motion
+  energy,      ///< |Delta E| above its share of the energy the step exchanged
+};
 
 /// Outcome of one step: success, or the reason and the index of the failing step. Trivially
 /// copyable (returned by every step); details that need text travel in integration_error.
@@ -47,14 +54,23 @@ struct step_status {
   long step = 0;        ///< index k of the step k -> k+1 that was attempted
   int iterations = 0;   ///< iterations used (Newton iterations or fixed-point sweeps)
   int node = -1;        ///< the grid node concerned (beam), or -1
-  /// For left_regime: the observed relative energy change and the monitor's bound (as double,
-  /// for the message only).
+  /// For left_regime: the criterion, its observed value and its bound (as double, for the
+  /// message only).
+  monitor_check regime_check = monitor_check::none;
   double observed = 0, bound = 0;
   explicit operator bool() const { return reason == step_failure::none; }
   std::string message() const {
     std::string text = "geomint: step " + std::to_string(step) + ": " + std::string(to_string(reason));
-    if (reason == step_failure::left_regime)
-      text += ": |E_{k+1} - E_k| / max(|E_k|, |E_{k+1}|) = " + std::to_string(observed) + " > " + std::to_string(bound);
+    if (reason == step_failure::left_regime) {
+      if (regime_check == monitor_check::resolution)
+        text += ": tau * omega_max = " + std::to_string(observed) + " > " + std::to_string(bound) +
+                " (the step does not resolve the fastest local motion)";
+      else if (regime_check == monitor_check::energy)
+        text += ": |E_{k+1} - E_k| / (|Delta(p.qdot)| + |Delta L|) = " + std::to_string(observed) + " > " +
+                std::to_string(bound) + " (the energy error is comparable to the energy the step exchanged)";
+      else if (regime_check == monitor_check::non_finite)
+        text += ": the energy or the local rate is not finite (the Legendre transform failed)";
+    }
     if (node >= 0) text += " at node " + std::to_string(node);
     if (iterations > 0) text += " (after " + std::to_string(iterations) + " iterations)";
     return text;
