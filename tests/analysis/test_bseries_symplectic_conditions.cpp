@@ -37,7 +37,7 @@ TEST_CASE("bseries symplectic conditions: symplectic methods satisfy them up to 
   // order 2 but is not symmetric (its adjoint takes the steps in the other order), so its
   // modified field has an h^3 term (a method is symmetric iff its modified field has only even
   // powers of h, HLW section IX.2): the conditions are not met trivially by zeros.
-  const rk_tableau<Q> composed{{q(1, 6), q(2, 3)}, {{q(1, 6), q(0)}, {q(1, 3), q(1, 3)}}, {q(1, 3), q(2, 3)}};
+  const rk_tableau<Q> composed = composed_midpoint();
   CHECK(verdict_of(trees, composed).holds);
   const auto b = modified_field(trees, elementary_weights(trees, composed));
   bool odd_power_term = false;
