@@ -124,6 +124,9 @@ TEST_CASE("bseries trees: bad requests are refused with a reason", "[bseries]") 
   CHECK_THROWS_AS(tree_set(15, 1), std::invalid_argument);
   CHECK_THROWS_AS(tree_set(10, 2), std::invalid_argument);
   CHECK_THROWS_AS(tree_set(3, 3), std::invalid_argument);
+  const tree_set small(2, 1);
+  CHECK_THROWS_AS(small.butcher_product(0, small.size()), std::out_of_range);
+  CHECK_THROWS_AS(small.butcher_product(-1, 0), std::out_of_range);
 }
 
 }  // namespace bseries_trees_test

@@ -35,19 +35,19 @@ symplecticity_verdict check_symplecticity_conditions(const tree_set& trees, cons
   symplecticity_verdict verdict;
   verdict.checked_order = trees.max_order();
   for (int n = 2; n <= trees.max_order(); ++n)
-    for (int u = 0; u < trees.first(n); ++u)
-      for (int v = u; v < trees.first(n); ++v) {
-        if (trees[u].order + trees[v].order != n) continue;
-        const auto uv = static_cast<std::size_t>(trees.butcher_product(u, v));
-        const auto vu = static_cast<std::size_t>(trees.butcher_product(v, u));
-        if (b[uv] + b[vu] != T(0)) {
-          verdict.holds = false;
-          verdict.failing_order = n;
-          verdict.u = u;
-          verdict.v = v;
-          return verdict;
+    for (int k = 1; 2 * k <= n; ++k)  // |u| = k <= |v| = n - k
+      for (int u = trees.first(k); u < trees.first(k + 1); ++u)
+        for (int v = (2 * k == n ? u : trees.first(n - k)); v < trees.first(n - k + 1); ++v) {
+          const auto uv = static_cast<std::size_t>(trees.butcher_product(u, v));
+          const auto vu = static_cast<std::size_t>(trees.butcher_product(v, u));
+          if (b[uv] + b[vu] != T(0)) {
+            verdict.holds = false;
+            verdict.failing_order = n;
+            verdict.u = u;
+            verdict.v = v;
+            return verdict;
+          }
         }
-      }
   return verdict;
 }
 
