@@ -89,10 +89,27 @@ TEST_CASE("bseries modified Hamiltonian: exists for a symplectic method, refused
   // Two midpoint steps of sizes h/3 and 2h/3 (symplectic, HLW section VI.4; see
   // test_bseries_symplectic_conditions.cpp): an h^3 term (order 4) appears.
   const rk_tableau<Q> composed = composed_midpoint();
-  const auto terms = modified_hamiltonian(trees, modified_field(trees, elementary_weights(trees, composed)));
-  bool order_four = false;
-  for (const auto& term : terms) order_four = order_four || term.order == 4;
-  CHECK(order_four);
+  const auto b = modified_field(trees, elementary_weights(trees, composed));
+  const auto terms = modified_hamiltonian(trees, b);
+  // The h^3 term by hand: the order-4 free trees are the path (superfluous, [tau] o [tau]) and
+  // the star, rooted as [tau,tau,tau] (sigma 6) or [[tau,tau]] (sigma 2). For H~ = ... +
+  // h^3 c H'''(f,f,f): grad (H'''(f,f,f)) = H''''(f,f,f) + 3 f'^T H'''(f,f), f'^T = -H'' J^{-1},
+  // so J^{-1} grad = f'''(f,f,f) - 3 f'f''(f,f): the field's coefficients are
+  // b([tau,tau,tau])/6 = c and b([[tau,tau]])/2 = -3c.
+  const int tau = trees.leaf(0);
+  const int star_at_centre = trees.find(0, {tau, tau, tau}), star_at_leaf = trees.find(0, {trees.find(0, {tau, tau})});
+  const Q c = b[static_cast<std::size_t>(star_at_centre)] / 6;
+  CHECK(c != q(0));
+  CHECK(b[static_cast<std::size_t>(star_at_leaf)] / 2 == -3 * c);
+  int order_four = 0;
+  for (const auto& term : terms) {
+    if (term.order != 4) continue;
+    ++order_four;
+    REQUIRE((term.tree == star_at_centre || term.tree == star_at_leaf));
+    // H([[tau,tau]]) = H'(f''(f,f)) = -H'''(f,f,f) (f = J^{-1} grad H, J^{-1} skew).
+    CHECK(term.coefficient == (term.tree == star_at_centre ? c : -c));
+  }
+  CHECK(order_four == 1);
   CHECK_THROWS_AS(modified_hamiltonian(trees, modified_field(trees, elementary_weights(trees, explicit_euler()))), std::domain_error);
   CHECK_THROWS_AS(free_trees(tree_set(3, 2)), std::invalid_argument);
 }
