@@ -112,6 +112,8 @@ TEST_CASE("bseries modified Hamiltonian: exists for a symplectic method, refused
   CHECK(order_four == 1);
   CHECK_THROWS_AS(modified_hamiltonian(trees, modified_field(trees, elementary_weights(trees, explicit_euler()))), std::domain_error);
   CHECK_THROWS_AS(free_trees(tree_set(3, 2)), std::invalid_argument);
+  const tree_set two(3, 2);
+  CHECK_THROWS_AS(modified_hamiltonian(two, std::vector<Q>(static_cast<std::size_t>(two.size()))), std::invalid_argument);
 }
 
 }  // namespace bseries_modified_hamiltonian_test

@@ -97,6 +97,8 @@ struct hamiltonian_term {
 /// if the symplecticity conditions fail (the modified field is not Hamiltonian).
 template <class T>
 std::vector<hamiltonian_term<T>> modified_hamiltonian(const tree_set& trees, const std::vector<T>& b) {
+  if (trees.colours() != 1)
+    throw std::invalid_argument("geomint::analysis::bseries::modified_hamiltonian: only one-colour trees are supported");
   if (b.size() != static_cast<std::size_t>(trees.size()))
     throw std::invalid_argument("geomint::analysis::bseries::modified_hamiltonian: one coefficient b(t) per tree is needed");
   const symplecticity_verdict verdict = check_symplecticity_conditions(trees, b);
