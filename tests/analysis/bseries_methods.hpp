@@ -36,5 +36,10 @@ inline rk_tableau<Q> lobatto_iiib_3() {
 }
 inline rk_tableau<Q> lobatto_iiia_2() { return {{q(0), q(1)}, {{q(0), q(0)}, {q(1, 2), q(1, 2)}}, {q(1, 2), q(1, 2)}}; }
 inline rk_tableau<Q> lobatto_iiib_2() { return {{q(0), q(1)}, {{q(1, 2), q(0)}, {q(1, 2), q(0)}}, {q(1, 2), q(1, 2)}}; }
+/// Two implicit midpoint steps of sizes h/3 and 2h/3: symplectic (b_i a_ij + b_j a_ji = b_i b_j,
+/// HLW section VI.4), order 2, not symmetric.
+inline rk_tableau<Q> composed_midpoint() {
+  return {{q(1, 6), q(2, 3)}, {{q(1, 6), q(0)}, {q(1, 3), q(1, 3)}}, {q(1, 3), q(2, 3)}};
+}
 
 }  // namespace bseries_test_methods

@@ -3,11 +3,11 @@
 /// Independent sources: the numbers of rooted trees per order (OEIS A000081, listed in Hairer,
 /// Lubich, Wanner, Geometric Numerical Integration, 2nd ed. 2006, section III.1) and of
 /// bi-coloured rooted trees with a root of a given colour (OEIS A000151; HLW section III.2);
-/// sigma and gamma of the trees of order <= 4 as printed in HLW section III.1 (Table III.1.1);
-/// and the count of monotone labellings: n!/(sigma(t) gamma(t)) labellings of t summed over the
-/// trees of order n with a given root colour give the (n-1)! increasing trees with n vertices,
-/// times 2^(n-1) colourings of the non-root vertices for two colours (Butcher, Numerical Methods
-/// for Ordinary Differential Equations, 3rd ed. 2016, section 30).
+/// sigma and gamma of the trees of order <= 4 as printed in the table of HLW section III.1; and
+/// the count of increasing labellings: a tree t with n vertices has n!/(sigma(t) gamma(t))
+/// labellings by 1..n increasing away from the root, up to its symmetries, and the increasing
+/// (recursive) trees with n vertices number (n-1)! (vertex k + 1 hangs from one of the k
+/// before it); with two colours, the n - 1 non-root vertices are coloured freely, 2^(n-1) ways.
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -34,7 +34,7 @@ TEST_CASE("bseries trees: counts per order match OEIS A000081 and A000151", "[bs
   }
 }
 
-TEST_CASE("bseries trees: sigma and gamma of the trees of order <= 4 (HLW Table III.1.1)", "[bseries]") {
+TEST_CASE("bseries trees: sigma and gamma of the trees of order <= 4 (HLW III.1)", "[bseries]") {
   const tree_set trees(4, 1);
   const int tau = trees.leaf(0);
   const int t2 = trees.find(0, {tau});              // [tau]
@@ -63,7 +63,7 @@ TEST_CASE("bseries trees: sigma and gamma of the trees of order <= 4 (HLW Table 
   CHECK(trees.butcher_product(tall, t2) == -1);  // order 5 > 4
 }
 
-TEST_CASE("bseries trees: monotone labellings n!/(sigma gamma) sum to (n-1)! (x 2^(n-1) for two colours)", "[bseries]") {
+TEST_CASE("bseries trees: increasing labellings n!/(sigma gamma) sum to (n-1)! (x 2^(n-1) for two colours)", "[bseries]") {
   for (int colours = 1; colours <= 2; ++colours) {
     const tree_set trees(colours == 1 ? 10 : 8, colours);
     std::int64_t factorial = 1;  // (n-1)!
@@ -124,6 +124,9 @@ TEST_CASE("bseries trees: bad requests are refused with a reason", "[bseries]") 
   CHECK_THROWS_AS(tree_set(15, 1), std::invalid_argument);
   CHECK_THROWS_AS(tree_set(10, 2), std::invalid_argument);
   CHECK_THROWS_AS(tree_set(3, 3), std::invalid_argument);
+  const tree_set small(2, 1);
+  CHECK_THROWS_AS(small.butcher_product(0, small.size()), std::out_of_range);
+  CHECK_THROWS_AS(small.butcher_product(-1, 0), std::out_of_range);
 }
 
 }  // namespace bseries_trees_test

@@ -16,7 +16,6 @@
 
 #include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "geomint/analysis/bseries/trees.hpp"

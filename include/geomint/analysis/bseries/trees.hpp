@@ -111,8 +111,8 @@ class tree_set {
   /// The Butcher product u o v: v grafted as a new subtree onto the root of u (HLW section III.1;
   /// the product of the symplecticity conditions, HLW section IX.9); -1 if |u| + |v| exceeds max_order.
   int butcher_product(int u, int v) const {
+    if (v < 0 || v >= size()) throw std::out_of_range("geomint::analysis::bseries::tree_set::butcher_product: no tree " + std::to_string(v));
     std::vector<int> subtrees = (*this)[u].subtrees;
-    (void)(*this)[v];
     subtrees.push_back(v);
     return find((*this)[u].colour, std::move(subtrees));
   }
