@@ -209,6 +209,7 @@ geomint_cli_test(geomint_cli_workprecision_all_failed 3
                  "stopped after 1.0* CPU seconds .--max-seconds.*every run failed .no measurement"
                  $<TARGET_FILE:geomint-workprecision> --t-end 1000000 --methods taylor-series --max-seconds 0.1 --passes 1)
 set_tests_properties(geomint_cli_workprecision_all_failed PROPERTIES TIMEOUT 60 LABELS cli_corpus)
+geomint_cli_corpus_flag(geomint-symplectic --long-steps range "--long-steps is out of range: '1000000001'" --long-steps 1000000001)
 # geomint-order's work is bounded up front (10^7 steps per case over the ladder and the zoo
 # reference): a ladder to 10^9 steps is refused at parse time, for the built-in and zoo systems.
 geomint_cli_corpus_flag(geomint-order --steps builtin_work "--steps: the ladder needs at least 1000000010 steps per case, more than the bound 10000000"
