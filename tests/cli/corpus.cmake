@@ -136,8 +136,8 @@ function(geomint_cli_corpus_flag tool flag case flag_regex)
   set_tests_properties(geomint_cli_corpus_${_name} PROPERTIES TIMEOUT 30 LABELS cli_corpus)
 endfunction()
 set(_study_values --system --scheme --nodes --m --digits --threads)
-set(_values_geomint-run --system --scheme --nodes --basis --m --digits --tau --steps --every --q0 --p0)
-set(_switches_geomint-run --csv --no-monitor --compensated --growth)
+set(_values_geomint-run --system --scheme --nodes --basis --m --digits --tau --steps --every --q0 --p0 --tableau)
+set(_switches_geomint-run --csv --no-monitor --compensated --growth --estimate)
 set(_values_geomint-order ${_study_values} --t-end --steps)
 set(_switches_geomint-order --csv --no-monitor)
 set(_values_geomint-symplectic ${_study_values} --tau --long-tau --long-steps --q0 --p0)
@@ -203,6 +203,19 @@ geomint_cli_test(geomint_cli_bounds_workprecision_budget any
                  "taylor-series at knob 0: stopped after 1.0* CPU seconds .--max-seconds."
                  $<TARGET_FILE:geomint-workprecision> --t-end 1000000 --methods taylor-series --max-seconds 0.1 --passes 1)
 set_tests_properties(geomint_cli_bounds_workprecision_budget PROPERTIES TIMEOUT 60 LABELS cli_corpus)
+# A sweep in which every run failed is no measurement: exit 3. The Taylor-series flow is one run
+# and the only method selected; to T = 10^6 it needs far more than its one CPU second.
+geomint_cli_test(geomint_cli_workprecision_all_failed 3
+                 "stopped after 1.0* CPU seconds .--max-seconds.*every run failed .no measurement"
+                 $<TARGET_FILE:geomint-workprecision> --t-end 1000000 --methods taylor-series --max-seconds 0.1 --passes 1)
+set_tests_properties(geomint_cli_workprecision_all_failed PROPERTIES TIMEOUT 60 LABELS cli_corpus)
+geomint_cli_corpus_flag(geomint-symplectic --long-steps range "--long-steps is out of range: '1000000001'" --long-steps 1000000001)
+# geomint-order's work is bounded up front (10^7 steps per case over the ladder and the zoo
+# reference): a ladder to 10^9 steps is refused at parse time, for the built-in and zoo systems.
+geomint_cli_corpus_flag(geomint-order --steps builtin_work "--steps: the ladder needs at least 1000000010 steps per case, more than the bound 10000000"
+                        --steps 8,1000000000)
+geomint_cli_corpus_flag(geomint-order --steps zoo_work "--steps: the ladder and its zoo reference need at least 4000000022 steps per case, more than the bound 10000000"
+                        --digits 16 --system henon-heiles --scheme midpoint --steps 8,1000000000)
 if(GEOMINT_RUN_MULTIPRECISION)  # geomint-order computes in 50 digits by default
   geomint_cli_test(geomint_cli_bounds_order_t_end nonzero "reference_flow: t_end - t = 1e.300 needs about .* Taylor steps, more than the bound 100000000"
                    $<TARGET_FILE:geomint-order> --t-end 1e300)

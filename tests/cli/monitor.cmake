@@ -73,3 +73,17 @@ geomint_cli_test(geomint_cli_symplectic_parabolic_kepler zero "kepler,galerkin,-
 # rule's bound 3.
 geomint_cli_test(geomint_cli_symplectic_monitor_reason 3 "the map failed at a perturbed state: .*tau . omega_max = [0-9.]+ > 3"
                  $<TARGET_FILE:geomint-symplectic> --digits 16 --system pendulum --scheme midpoint --tau 5)
+# geomint-symplectic's long runs carry an error estimate (the same run at tau/2): for the midpoint
+# rule on the harmonic oscillator from (1, 1) (the rotation by 2 atan(tau/2) per step, closed form
+# above) 2 |z_200(0.05) - z_400(0.025)|_inf = 0.0043189 at t = 10 (true error 0.0028797, below
+# it), under 1/100 of the solution's size 1.38; at tau = 1 over t = 100 it is 2.6178 (true error
+# 1.30, the solution's size 1.39): the run must say it is coarse. The defect's own estimate is
+# printed beside it.
+geomint_cli_test(geomint_cli_symplectic_long_estimate zero
+                 "max_energy_error,energy_drift,regime,defect_estimate,state_error_estimate.harmonic,midpoint,-,-,0.25,[^,]+,[^,]+,[^,]+,ok,[^,]+,4[.]32e-03"
+                 $<TARGET_FILE:geomint-symplectic> --digits 16 --system harmonic --scheme midpoint --long-steps 200
+                 --long-tau 0.05 --csv)
+geomint_cli_test(geomint_cli_symplectic_long_coarse zero
+                 "2[.]62e[+]00  COARSE.*coarse long run: the estimated error at t = N tau is 2[.]62e[+]00"
+                 $<TARGET_FILE:geomint-symplectic> --digits 16 --system harmonic --scheme midpoint --long-steps 100
+                 --long-tau 1)

@@ -16,7 +16,7 @@ const char* usage =
     "                   [--scheme lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin|paper23 | --tableau FILE]\n"
     "                   [--nodes equispaced|lobatto|chebyshev|gauss-interior (or gauss_lobatto, ...)]\n"
     "                   [--basis lagrange|bernstein]\n"
-    "                   [--m M (2..16)] [--tau T (> 0)] [--steps N] [--every K]\n"
+    "                   [--m M (2..16)] [--tau T (> 0)] [--steps N (0..10^12)] [--every K (1..10^12)]\n"
     "                   [--q0 a[,b]] [--p0 a[,b]] [--digits 16|50|100] [--csv]\n"
     "                   [--compensated] [--growth] [--estimate] [--no-monitor]\n"
     "Integrates the system with the one-step (q, p) form of the chosen scheme. With --csv prints\n"
@@ -54,6 +54,8 @@ const char* usage =
     "global error, |z(tau) - z(tau/2)|_inf 2^p/(2^p - 1) with p a lower bound of the scheme's\n"
     "order (free systems; a CSV column error_estimate, the summary to stderr with --csv), and\n"
     "'coarse run' when it exceeds 1/100 of max(|q|, |p|).\n"
+    "Work: N steps, 3N with --estimate (N <= 10^12); the run stops at its first failed step or\n"
+    "failed write.\n"
     "The step monitor (on by default; --no-monitor turns it off) refuses a step that does not\n"
     "resolve the motion (tau omega_max above the scheme's bound) or whose energy error is\n"
     "comparable to the energy it exchanges (docs/guide/robustness.md); exit status 3.\n"
@@ -138,10 +140,10 @@ int main(int argc, char** argv) {
     // Combinations the parser cannot see alone (--q0 with the wrong count for the system,
     // paper23 off the circle, initial data off the constraint).
     std::cout.flush();
-    return cl.fail(e.what());
+    return geomint::cli::finish_stdout("geomint-run", cl.fail(e.what()));
   } catch (const std::exception& e) {
     std::cout.flush();
     std::cerr << "geomint-run: " << e.what() << '\n';
-    return 1;
+    return geomint::cli::finish_stdout("geomint-run", 1);
   }
 }

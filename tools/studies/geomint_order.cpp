@@ -37,9 +37,15 @@ const char* usage =
     "are studied in double (--digits 16, which they require); their reference flow is the Galerkin\n"
     "VI of degree 3 (outer-solar: 2) in 50 digits, the step halved until two runs agree to 16 eps\n"
     "of double. The built-in systems need --digits 50|100.\n"
-    "--steps: 2 to 16 increasing counts in 1..10^9.\n"
-    "CSV header: system,scheme,nodes,m,local_order,global_order,error_constant,regime\n"
-    "(m and nodes are '-' where a scheme has none). regime is 'ok' only in the asymptotic regime\n"
+    "--steps: 2 to 16 increasing counts in 1..10^9, bounded up front: the steps of one case (the\n"
+    "ladder's runs, sum of N plus one local step per N) and, for the zoo systems, the least work of\n"
+    "their reference (3 max(2, N_max) + 6 per N) must not exceed 10^7 in total (else exit 2); the\n"
+    "zoo reference's doublings stop at that bound with an error, the built-in systems' Taylor\n"
+    "reference at 10^8 steps per state (analysis/reference_flow.hpp).\n"
+    "CSV header: system,scheme,nodes,m,local_order,global_order,error_constant,regime,order_spread,\n"
+    "finest_error (m and nodes are '-' where a scheme has none; order_spread: |difference| of the last\n"
+    "two successive global orders, the order's uncertainty; finest_error: the global error at the\n"
+    "finest step against the reference). regime is 'ok' only in the asymptotic regime\n"
     "(analysis/order_study.hpp, asymptotic_regime): at least three steps with errors above\n"
     "round-off, their global errors below 1/10 of the solution's size, the last two successive\n"
     "global orders within 1/4 of each other, the global order within 1/4 of an integer >= 1, the\n"
@@ -60,6 +66,30 @@ std::string sci3(const T& v) {
   std::ostringstream out;
   out << std::scientific << std::setprecision(2) << static_cast<double>(v);
   return out.str();
+}
+
+/// The uncertainty of a row's order: |difference| of its last two successive global orders.
+template <class T>
+std::string order_spread(const analysis::order_result<T>& r) {
+  if (!r.ok || r.global_orders.size() < 2) return "nan";
+  using std::abs;
+  return fixed2(T(abs(T(r.global_orders.back() - r.global_orders[r.global_orders.size() - 2]))));
+}
+
+/// The bound on the steps of one case: the ladder's runs and, for a zoo system, its reference.
+constexpr long max_case_steps = 10'000'000;
+
+/// The steps of the ladder's runs: N steps to T and one local step per count.
+long ladder_steps(const std::vector<long>& counts) {
+  long sum = 0;
+  for (long N : counts) sum += N + 1;  // counts <= 10^9, at most 16 of them: no overflow
+  return sum;
+}
+
+/// The least work of a zoo system's reference: two runs to T from the finest count, two runs of
+/// 2 and 4 steps to each T/N.
+long least_zoo_reference_steps(const std::vector<long>& counts) {
+  return 3 * std::max(2L, counts.back()) + 6 * static_cast<long>(counts.size());
 }
 
 /// The reference states at t_end / N (and t_end), computed once per system in the scalar R.
@@ -100,6 +130,7 @@ std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T
 template <class Sys, class T, class R>
 std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T>>> zoo_reference_states(
     const analysis::dynamic_vector<T>& q0, const analysis::dynamic_vector<T>& p0, const T& t_end, const std::vector<long>& counts) {
+  long budget = max_case_steps - ladder_steps(counts);  // the reference's share of the work bound
   scheme_spec spec;
   spec.scheme = "galerkin";
   spec.m = tools::zoo_scheme_set<Sys, R>::galerkin_max_m;
@@ -110,6 +141,10 @@ std::map<long, std::pair<analysis::dynamic_vector<T>, analysis::dynamic_vector<T
     q = qr0;
     p = pr0;
     dynamic_vector<R> q1, p1;
+    if (steps > budget)
+      throw std::runtime_error("reference flow of " + std::string(Sys::name) + ": no agreement within the work bound (" +
+                               std::to_string(max_case_steps) + " steps summed over the ladder and its reference; --steps)");
+    budget -= steps;
     const R tau = t / R(steps);
     for (long k = 0; k < steps; ++k) {
       const step_status st = stepper->try_step(q, p, tau, q1, p1);
@@ -210,7 +245,7 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int status = 0;
   const int scheme_w = geomint::studies::scheme_column_width(cases);
-  if (sel.csv) std::cout << "system,scheme,nodes,m,local_order,global_order,error_constant,regime\n";
+  if (sel.csv) std::cout << "system,scheme,nodes,m,local_order,global_order,error_constant,regime,order_spread,finest_error\n";
   else
     std::cout << std::left << std::setw(16) << "system" << std::setw(scheme_w) << "scheme" << std::setw(16) << "nodes"
               << std::setw(4) << "m" << std::right << std::setw(8) << "local" << std::setw(8) << "global"
@@ -232,7 +267,8 @@ int run(const geomint::studies::selection& sel, const T& t_end, const std::vecto
                       ec = r.ok ? sci3(r.error_constant) : "nan";
     if (sel.csv) {
       std::cout << c.system << ',' << c.spec.scheme << ',' << c.spec.nodes_label() << ','
-                << geomint::studies::m_label(c.spec) << ',' << lo << ',' << go << ',' << ec << ',' << regime << '\n';
+                << geomint::studies::m_label(c.spec) << ',' << lo << ',' << go << ',' << ec << ',' << regime << ','
+                << order_spread(r) << ',' << (r.ok && !r.global_errors.empty() ? sci3(r.global_errors.back()) : "nan") << '\n';
     } else {
       std::cout << std::left << std::setw(16) << c.system << std::setw(scheme_w) << c.spec.scheme << std::setw(16)
                 << c.spec.nodes_label() << std::setw(4) << geomint::studies::m_label(c.spec) << std::right
@@ -270,6 +306,13 @@ int main(int argc, char** argv) {
       })
       .toggle("--no-monitor", [&] { monitor = false; });
   if (const auto done = cl.parse(argc, argv)) return *done;
+  {
+    const bool zoo = std::any_of(sel.systems.begin(), sel.systems.end(), [](const std::string& s) { return tools::is_zoo_name(s); });
+    const long work = ladder_steps(counts) + (zoo ? least_zoo_reference_steps(counts) : 0);
+    if (work > max_case_steps)
+      return cl.fail("--steps: the ladder" + std::string(zoo ? " and its zoo reference need" : " needs") + " at least " +
+                     std::to_string(work) + " steps per case, more than the bound " + std::to_string(max_case_steps));
+  }
   try {
     auto parse_time = [&](auto zero) {
       using T = decltype(zero);
@@ -295,9 +338,9 @@ int main(int argc, char** argv) {
     }
     return cli::finish_stdout("geomint-order", status);
   } catch (const cli::usage_error& e) {
-    return cl.fail(e.what());
+    return cli::finish_stdout("geomint-order", cl.fail(e.what()));
   } catch (const std::exception& e) {
     std::cerr << "geomint-order: " << e.what() << '\n';
-    return 1;
+    return cli::finish_stdout("geomint-order", 1);
   }
 }

@@ -92,9 +92,9 @@ int main(int argc, char** argv) {
     return geomint::cli::finish_stdout("geomint-workprecision", rc);
   } catch (const std::invalid_argument& e) {
     std::cerr << "geomint-workprecision: " << e.what() << "\n" << usage;
-    return geomint::cli::exit_usage;
+    return geomint::cli::finish_stdout("geomint-workprecision", geomint::cli::exit_usage);
   } catch (const std::exception& e) {
     std::cerr << "geomint-workprecision: " << e.what() << "\n";
-    return 1;
+    return geomint::cli::finish_stdout("geomint-workprecision", 1);
   }
 }

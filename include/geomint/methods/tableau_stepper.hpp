@@ -7,6 +7,7 @@
 ///   auto s = geomint::make_tableau_stepper<geomint::systems::pendulum, double>(
 ///       geomint::methods::nystrom_form_of(geomint::methods::read_tableau_file("gauss2.tableau")));
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -24,7 +25,10 @@ std::unique_ptr<any_stepper<T>> make_tableau_stepper(const methods::nystrom_form
   using engine = methods::detail::tableau_engine<Sys, T>;
   const std::string name = (form.name.empty() ? std::string("tableau") : form.name) + " (" +
                            std::string(methods::to_string(form.kind)) + ", " + std::to_string(form.stages) + " stages)";
-  return std::make_unique<engine_stepper<engine, Sys, T>>(sys, engine(sys, methods::to_scalar<T>(form)), name);
+  // A method given as data has no resolution bound of its own (step_monitor.hpp: infinity turns
+  // the resolution check off unless the user sets max_tau_omega; the energy criterion applies).
+  return std::make_unique<engine_stepper<engine, Sys, T>>(sys, engine(sys, methods::to_scalar<T>(form)), name,
+                                                          std::numeric_limits<T>::infinity());
 }
 
 }  // namespace geomint
