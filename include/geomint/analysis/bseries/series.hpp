@@ -58,16 +58,19 @@ void check_tableau(const weights_of_colour<T>& m, std::size_t stages, std::size_
     if (row.size() != stages) throw std::invalid_argument(name + "has a row of A of a length different from the length of b");
 }
 
-/// Elementary weights with one (A, b) per colour (weights[colour]).
+/// Elementary weights with one (A, b) per colour (weights[colour]); with `wanted`, only for the
+/// trees it marks (a set closed under taking subtrees), zero for the others.
 template <class T>
-std::vector<T> elementary_weights(const tree_set& trees, const weights_of_colour<T>* weights) {
+std::vector<T> elementary_weights(const tree_set& trees, const weights_of_colour<T>* weights,
+                                  const std::vector<bool>* wanted = nullptr) {
   const std::size_t s = weights[0].b->size();
   const auto n = static_cast<std::size_t>(trees.size());
   // g[t][i] = g_i(t); fed[t][i] = sum_j a^{colour of t}_ij g_j(t), the factor t contributes
   // as a subtree.
   std::vector<std::vector<T>> g(n), fed(n);
-  std::vector<T> phi(n);
+  std::vector<T> phi(n, T(0));
   for (std::size_t t = 0; t < n; ++t) {
+    if (wanted && !(*wanted)[t]) continue;
     const rooted_tree& tree = trees[static_cast<int>(t)];
     g[t].assign(s, T(1));
     for (int u : tree.subtrees)
@@ -87,9 +90,11 @@ std::vector<T> elementary_weights(const tree_set& trees, const weights_of_colour
 /// a(t) = Phi(t) for every tree: the B-series of one step of a Runge-Kutta tableau (kind rk,
 /// one-colour trees) or the P-series of a partitioned pair (kind prk, two-colour trees; (A, b)
 /// on colour 0, (Ahat, bhat) on colour 1); a(empty) = 1. Other kinds: see
-/// bseries/partitioned_form.hpp.
+/// bseries/partitioned_form.hpp. With `wanted` (one entry per tree, a set closed under taking
+/// subtrees), only the marked trees are computed; the others are zero.
 template <class T>
-std::vector<T> elementary_weights(const tree_set& trees, const tableau_data<T>& method) {
+std::vector<T> elementary_weights(const tree_set& trees, const tableau_data<T>& method,
+                                  const std::vector<bool>* wanted = nullptr) {
   const detail::weights_of_colour<T> weights[2] = {{&method.a, &method.b}, {&method.ahat, &method.bhat}};
   if (method.kind == methods::method_kind::rk) {
     if (trees.colours() != 1)
@@ -103,7 +108,9 @@ std::vector<T> elementary_weights(const tree_set& trees, const tableau_data<T>& 
   } else {
     throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: an rk or prk tableau is needed (rkn and nystrom: partitioned_form_of)");
   }
-  return detail::elementary_weights(trees, weights);
+  if (wanted && wanted->size() != static_cast<std::size_t>(trees.size()))
+    throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: `wanted` needs one entry per tree");
+  return detail::elementary_weights(trees, weights, wanted);
 }
 
 /// The same for a fixed-size methods:: tableau (rk or prk).
