@@ -342,7 +342,7 @@ int main(int argc, char** argv) {
   // --tableau now takes a file; the built-in tableau is --print-tableau.
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--tableau" && (i + 1 == argc || std::string(argv[i + 1]).rfind("--", 0) == 0))
-      return cl.fail("--tableau needs a tableau FILE (to print a built-in scheme's tableau use --print-tableau)");
+      return cl.fail("--tableau needs a value: a tableau FILE (to print a built-in scheme's tableau use --print-tableau)");
   if (const auto done = cl.parse(argc, argv)) return *done;
   if (!o.tableau_file.empty()) {
     if (o.mode != "analyse") return cl.fail("--tableau FILE is analysed with --analyse (--print-tableau prints a built-in scheme)");
