@@ -78,6 +78,23 @@ TEST_CASE("bseries method analysis: RK4, Gauss RK and Nystrom's method written a
   CHECK(pair.symplectic);
 }
 
+TEST_CASE("bseries method analysis: a composition through its Nystrom form", "[bseries]") {
+  // Yoshida's triple jump of Stormer-Verlet over Q(2^(1/3)), gamma = (1, -r, 1)/(2 - r): order 4
+  // (Yoshida, Phys. Lett. A 150 (1990) 262-268; HLW section II.4), symplectic (a composition of
+  // symplectic maps); two half steps of Stormer-Verlet: order 2, symplectic.
+  using geomint::methods::algebraic_field;
+  const auto verlet = example("stormer_verlet.tableau");
+  const auto base = geomint::methods::nystrom_form_of(verlet);
+  const field_element r = field_element::generator(algebraic_field::make({-2, 0, 0, 1}));
+  const field_element one(1), two(2);
+  const method_analysis jump = analyse_method(geomint::methods::compose(base, {one / (two - r), -r / (two - r), one / (two - r)}));
+  CHECK(jump.order == 4);
+  CHECK(jump.symplectic);
+  const method_analysis halves = analyse_method(geomint::methods::compose(base, {one / two, one / two}));
+  CHECK(halves.order == 2);
+  CHECK(halves.symplectic);
+}
+
 TEST_CASE("bseries partitioned form: Stormer-Verlet as an RKN is Lobatto IIIA-IIIB on the Nystrom trees", "[bseries]") {
   // Stormer-Verlet as an RKN (HLW section I.1.4) and as the pair Lobatto IIIA (q) - IIIB (v)
   // (HLW section II.2.2) are the same map on q' = v, v' = f(q): their P-series agree on every
@@ -95,7 +112,7 @@ TEST_CASE("bseries partitioned form: Stormer-Verlet as an RKN is Lobatto IIIA-II
   int compared = 0, differing_elsewhere = 0;
   for (int t = 0; t < trees.size(); ++t) {
     const auto k = static_cast<std::size_t>(t);
-    if (nystrom_tree(trees, t, true)) {
+    if (is_nystrom_tree(trees, t, true)) {
       ++compared;
       CHECK(converted[k] == lobatto[k]);
     } else {
@@ -108,10 +125,10 @@ TEST_CASE("bseries partitioned form: Stormer-Verlet as an RKN is Lobatto IIIA-II
   CHECK(differing_elsewhere > 0);
   // The one-vertex trees and the tree q[v] (the q-component of h^2/2 f) are Nystrom trees; q[q]
   // (f_q f, zero for f = v) is not.
-  CHECK(nystrom_tree(trees, trees.find(0, {trees.leaf(1)}), true));
-  CHECK_FALSE(nystrom_tree(trees, trees.find(0, {trees.leaf(0)}), true));
-  CHECK_FALSE(nystrom_tree(trees, trees.find(1, {trees.leaf(1)}), true));
-  CHECK(nystrom_tree(trees, trees.find(1, {trees.leaf(1)}), false));
+  CHECK(is_nystrom_tree(trees, trees.find(0, {trees.leaf(1)}), true));
+  CHECK_FALSE(is_nystrom_tree(trees, trees.find(0, {trees.leaf(0)}), true));
+  CHECK_FALSE(is_nystrom_tree(trees, trees.find(1, {trees.leaf(1)}), true));
+  CHECK(is_nystrom_tree(trees, trees.find(1, {trees.leaf(1)}), false));
 }
 
 /// A library tableau with rational nodes (the interior nodes, ascending) as the library's

@@ -51,38 +51,54 @@ bool rkn_symplectic(const methods::nystrom_form<K>& f) {
 }
 }  // namespace detail
 
-/// Order and symplecticity of a tableau of any kind (std::invalid_argument for inconsistent sizes).
+namespace detail {
+/// The order of the series a over the trees marked in `wanted` (sorted by order).
 template <class K>
-method_analysis analyse_method(const tableau_data<K>& t, int order_one_colour = default_order_one_colour,
-                               int order_two_colours = default_order_two_colours) {
-  method_analysis r;
-  const bool one_colour = t.kind == methods::method_kind::rk;
-  const bool nystrom_kind = t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom;
-  r.colours = one_colour ? 1 : 2;
-  r.tree_order = one_colour ? order_one_colour : order_two_colours;
-  const tree_set trees(r.tree_order, r.colours);
-  std::vector<bool> wanted(static_cast<std::size_t>(trees.size()), true);
-  if (nystrom_kind)
-    for (int u = 0; u < trees.size(); ++u)
-      wanted[static_cast<std::size_t>(u)] = nystrom_tree(trees, u, t.kind == methods::method_kind::rkn);
-  const std::vector<K> a = elementary_weights(trees, partitioned_form_of(t), &wanted);
+void order_of(const tree_set& trees, const std::vector<K>& a, const std::vector<bool>& wanted, method_analysis& r) {
   const std::vector<K> err = local_error_coefficients(trees, a);
   r.order = r.tree_order;
   r.order_is_lower_bound = true;
-  for (int t_index = 0; t_index < trees.size() && r.order_is_lower_bound; ++t_index) {
-    if (!wanted[static_cast<std::size_t>(t_index)]) continue;
-    if (!(err[static_cast<std::size_t>(t_index)] == K(0))) {
-      r.order = trees[t_index].order - 1;
-      r.order_is_lower_bound = false;
-    }
+  for (int t = 0; t < trees.size(); ++t) {
+    if (!wanted[static_cast<std::size_t>(t)] || err[static_cast<std::size_t>(t)] == K(0)) continue;
+    r.order = trees[t].order - 1;
+    r.order_is_lower_bound = false;
+    return;
   }
-  if (nystrom_kind) {
-    r.symplectic = detail::rkn_symplectic(methods::nystrom_form_of(t));
-    r.symplecticity_basis = "RKN conditions (exact)";
-  } else {
-    r.symplectic = check_symplecticity_conditions(trees, modified_field(trees, a)).holds;
-    r.symplecticity_basis = "tree conditions up to order " + std::to_string(r.tree_order);
-  }
+}
+}  // namespace detail
+
+/// Order and symplecticity of a Nystrom form (an rkn or nystrom tableau, a composition:
+/// methods/nystrom_form.hpp) on the Nystrom trees of its partitioned form; symplecticity by the
+/// RKN conditions (on q'' = f(q)).
+template <class K>
+method_analysis analyse_method(const methods::nystrom_form<K>& f, int order_two_colours = default_order_two_colours) {
+  method_analysis r;
+  r.colours = 2;
+  r.tree_order = order_two_colours;
+  const tree_set trees(r.tree_order, r.colours);
+  std::vector<bool> wanted(static_cast<std::size_t>(trees.size()));
+  for (int t = 0; t < trees.size(); ++t) wanted[static_cast<std::size_t>(t)] = is_nystrom_tree(trees, t, !f.has_velocity_stages);
+  detail::order_of(trees, elementary_weights(trees, partitioned_form_of(f), &wanted), wanted, r);
+  r.symplectic = detail::rkn_symplectic(f);
+  r.symplecticity_basis = "RKN conditions (exact)";
+  return r;
+}
+
+/// Order and symplecticity of a tableau of any kind (std::invalid_argument for inconsistent
+/// sizes): rk on rooted trees, prk on bi-coloured trees, rkn and nystrom by their Nystrom form.
+template <class K>
+method_analysis analyse_method(const tableau_data<K>& t, int order_one_colour = default_order_one_colour,
+                               int order_two_colours = default_order_two_colours) {
+  if (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom)
+    return analyse_method(methods::nystrom_form_of(t), order_two_colours);
+  method_analysis r;
+  r.colours = t.kind == methods::method_kind::rk ? 1 : 2;
+  r.tree_order = r.colours == 1 ? order_one_colour : order_two_colours;
+  const tree_set trees(r.tree_order, r.colours);
+  const std::vector<K> a = elementary_weights(trees, t);
+  detail::order_of(trees, a, std::vector<bool>(static_cast<std::size_t>(trees.size()), true), r);
+  r.symplectic = check_symplecticity_conditions(trees, modified_field(trees, a)).holds;
+  r.symplecticity_basis = "tree conditions up to order " + std::to_string(r.tree_order);
   return r;
 }
 

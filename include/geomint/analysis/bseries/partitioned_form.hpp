@@ -22,7 +22,7 @@
 /// F evaluated at every stage but weighted only at the Nystrom stages (rkn: ap = 0). This is
 /// exact: the pair computes the same q1, v1 as the Nystrom method, so its P-series agrees with
 /// the method on every tree whose elementary differential is not identically zero on the
-/// first-order form (nystrom_tree below). On the other trees (a colour-0 vertex with two children or a
+/// first-order form (is_nystrom_tree below). On the other trees (a colour-0 vertex with two children or a
 /// colour-0 child: derivatives of f(q, v) = v that vanish) no P-series is defined by the method;
 /// analyses of rkn and nystrom tableaux use the Nystrom trees only.
 
@@ -77,15 +77,15 @@ tableau_data<K> partitioned_form_of(const tableau_data<K>& t) {
 /// colour 1 (f = v is linear in v, constant in q); for F = F(q) (velocity_free) every colour-1
 /// vertex has colour-0 children only. These are the trees of the Nystrom series (HNW section
 /// II.14, Nystrom trees).
-inline bool nystrom_tree(const tree_set& trees, int t, bool velocity_free) {
+inline bool is_nystrom_tree(const tree_set& trees, int t, bool velocity_free) {
   const rooted_tree& tree = trees[t];
   if (tree.colour == 0) {
     if (tree.subtrees.empty()) return true;
-    return tree.subtrees.size() == 1 && trees[tree.subtrees[0]].colour == 1 && nystrom_tree(trees, tree.subtrees[0], velocity_free);
+    return tree.subtrees.size() == 1 && trees[tree.subtrees[0]].colour == 1 && is_nystrom_tree(trees, tree.subtrees[0], velocity_free);
   }
   for (int u : tree.subtrees) {
     if (velocity_free && trees[u].colour == 1) return false;
-    if (!nystrom_tree(trees, u, velocity_free)) return false;
+    if (!is_nystrom_tree(trees, u, velocity_free)) return false;
   }
   return true;
 }
