@@ -78,6 +78,17 @@ TEST_CASE("bseries method analysis: RK4, Gauss RK and Nystrom's method written a
   CHECK(pair.symplectic);
 }
 
+TEST_CASE("bseries series: the fixed-size methods:: tableaux give the series of their run-time data", "[bseries]") {
+  // The implicit midpoint rule (HLW section II.1.1) as methods::rk<Q, 1> and as tableau_data;
+  // a one-stage prk pair of it on both components.
+  const geomint::methods::rk<Q, 1> midpoint{{q(1, 2)}, {{{q(1, 2)}}}, {q(1)}};
+  const tree_set one(5, 1), two(4, 2);
+  CHECK(elementary_weights(one, midpoint) == elementary_weights(one, implicit_midpoint()));
+  const geomint::methods::prk<Q, 1> pair{{q(1, 2)}, {{{q(1, 2)}}}, {q(1)}, {{{q(1, 2)}}}, {q(1)}};
+  CHECK(elementary_weights(two, pair) == elementary_weights(two, pair_of(implicit_midpoint(), implicit_midpoint())));
+  CHECK_THROWS_AS(elementary_weights(two, geomint::methods::data_of(midpoint)), std::invalid_argument);
+}
+
 TEST_CASE("bseries method analysis: a composition through its Nystrom form", "[bseries]") {
   // Yoshida's triple jump of Stormer-Verlet over Q(2^(1/3)), gamma = (1, -r, 1)/(2 - r): order 4
   // (Yoshida, Phys. Lett. A 150 (1990) 262-268; HLW section II.4), symplectic (a composition of
