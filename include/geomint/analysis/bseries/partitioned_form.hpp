@@ -5,14 +5,15 @@
 ///   q' = v (colour 0),   v' = F(q, v) (colour 1; F(q) for rkn).
 ///
 /// The conversion. A partitioned pair (A, b) on q and (Ahat, bhat) on v gives on this system
-/// Q_i = q + h sum_j a_ij V_j, V_i = v + h sum_j ahat_ij F_j (Hairer, Lubich & Wanner,
-/// Geometric Numerical Integration, 2nd ed. 2006, section II.2.3: the Nystrom method with
-/// abar = A Ahat, bbar = b^T Ahat). A Nystrom method (HNW: Hairer, Norsett & Wanner, Solving
-/// ODEs I, section II.14)
+/// Q_i = q + h sum_j a_ij V_j, V_i = v + h sum_j ahat_ij F_j: the Nystrom method with
+/// abar = A Ahat, bbar = b^T Ahat (HNW: Hairer, Norsett & Wanner, Solving ODEs I, section II.14;
+/// the relation methods/nystrom_form.hpp uses for prk tableaux). A Nystrom method
 ///   Q_i = q + c_i h v + h^2 sum_j abar_ij F_j,  V_i = v + h sum_j ap_ij F_j,
 ///   q1  = q + d h v + h^2 sum_j bbar_j F_j,    v1  = v + h sum_j b_j F_j
-/// is not of the form A Ahat in general (Stormer-Verlet's abar has no such factor with
-/// row sums c for every A), so the pair used here has 2s + 2 stages, each a (Q, V) pair:
+/// has no canonical factor abar = A Ahat with A 1 = c (an rkn gives no Ahat; a factor, when
+/// one exists, is not unique: Stormer-Verlet is Lobatto IIIA x IIIB, HLW: Hairer, Lubich &
+/// Wanner, Geometric Numerical Integration, 2006, section II.2.2), so the pair used here has
+/// 2s + 2 stages, each a (Q, V) pair:
 ///   stage 0:       V = v               (ahat row 0; A row 0),
 ///   stage i:       the Nystrom stage: V_i = v + h sum_j ap_ij F_j and
 ///                  Q_i = q + h ((c_i - 1) V_0 + X_i), since h X_i = h v + h^2 sum_j abar_ij F_j,
@@ -22,11 +23,11 @@
 /// F evaluated at every stage but weighted only at the Nystrom stages (rkn: ap = 0). This is
 /// exact: the pair computes the same q1, v1 as the Nystrom method, so its P-series agrees with
 /// the method on every tree whose elementary differential is not identically zero on the
-/// first-order form (is_nystrom_tree below). On the other trees (a colour-0 vertex with two children or a
-/// colour-0 child: derivatives of f(q, v) = v that vanish) no P-series is defined by the method;
+/// first-order form (is_nystrom_tree below). On the other trees (a colour-0 vertex with two
+/// children or a colour-0 child: derivatives of f(q, v) = v that vanish) the method defines no
+/// P-series coefficient;
 /// analyses of rkn and nystrom tableaux use the Nystrom trees only.
 
-#include <stdexcept>
 #include <vector>
 
 #include "geomint/analysis/bseries/series.hpp"
