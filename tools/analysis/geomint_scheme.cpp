@@ -339,7 +339,7 @@ int main(int argc, char** argv) {
     o.nodes_given = true;
   });
   cl.value("--m", [&](const std::string& v) { o.m_text = v; o.m_given = true; });
-  // --tableau now takes a file; the built-in tableau is --print-tableau.
+  // --tableau takes a FILE; a bare --tableau names --print-tableau (a built-in scheme's tableau).
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--tableau" && (i + 1 == argc || std::string(argv[i + 1]).rfind("--", 0) == 0))
       return cl.fail("--tableau needs a value: a tableau FILE (to print a built-in scheme's tableau use --print-tableau)");
