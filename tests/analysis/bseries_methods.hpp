@@ -10,36 +10,46 @@
 namespace bseries_test_methods {
 
 using Q = boost::multiprecision::cpp_rational;
-using geomint::analysis::bseries::rk_tableau;
-using geomint::analysis::bseries::prk_tableau;
+using tableau = geomint::methods::tableau_data<Q>;
+using geomint::analysis::bseries::pair_of;
 
 inline Q q(int p, int r = 1) { return Q(p) / Q(r); }
 
+/// A Runge-Kutta tableau (c, A, b) as the library's run-time tableau.
+inline tableau rk(std::vector<Q> c, std::vector<std::vector<Q>> a, std::vector<Q> b) {
+  tableau t;
+  t.kind = geomint::methods::method_kind::rk;
+  t.stages = static_cast<int>(b.size());
+  t.c = std::move(c);
+  t.a = std::move(a);
+  t.b = std::move(b);
+  return t;
+}
 
-inline rk_tableau<Q> explicit_euler() { return {{q(0)}, {{q(0)}}, {q(1)}}; }
-inline rk_tableau<Q> implicit_midpoint() { return {{q(1, 2)}, {{q(1, 2)}}, {q(1)}}; }
-inline rk_tableau<Q> classical_rk4() {
-  return {{q(0), q(1, 2), q(1, 2), q(1)},
+inline tableau explicit_euler() { return rk({q(0)}, {{q(0)}}, {q(1)}); }
+inline tableau implicit_midpoint() { return rk({q(1, 2)}, {{q(1, 2)}}, {q(1)}); }
+inline tableau classical_rk4() {
+  return rk({q(0), q(1, 2), q(1, 2), q(1)},
           {{q(0), q(0), q(0), q(0)}, {q(1, 2), q(0), q(0), q(0)}, {q(0), q(1, 2), q(0), q(0)}, {q(0), q(0), q(1), q(0)}},
-          {q(1, 6), q(1, 3), q(1, 3), q(1, 6)}};
+          {q(1, 6), q(1, 3), q(1, 3), q(1, 6)});
 }
-inline rk_tableau<Q> radau_iia_2() { return {{q(1, 3), q(1)}, {{q(5, 12), q(-1, 12)}, {q(3, 4), q(1, 4)}}, {q(3, 4), q(1, 4)}}; }
-inline rk_tableau<Q> lobatto_iiia_3() {
-  return {{q(0), q(1, 2), q(1)},
+inline tableau radau_iia_2() { return rk({q(1, 3), q(1)}, {{q(5, 12), q(-1, 12)}, {q(3, 4), q(1, 4)}}, {q(3, 4), q(1, 4)}); }
+inline tableau lobatto_iiia_3() {
+  return rk({q(0), q(1, 2), q(1)},
           {{q(0), q(0), q(0)}, {q(5, 24), q(1, 3), q(-1, 24)}, {q(1, 6), q(2, 3), q(1, 6)}},
-          {q(1, 6), q(2, 3), q(1, 6)}};
+          {q(1, 6), q(2, 3), q(1, 6)});
 }
-inline rk_tableau<Q> lobatto_iiib_3() {
-  return {{q(0), q(1, 2), q(1)},
+inline tableau lobatto_iiib_3() {
+  return rk({q(0), q(1, 2), q(1)},
           {{q(1, 6), q(-1, 6), q(0)}, {q(1, 6), q(1, 3), q(0)}, {q(1, 6), q(5, 6), q(0)}},
-          {q(1, 6), q(2, 3), q(1, 6)}};
+          {q(1, 6), q(2, 3), q(1, 6)});
 }
-inline rk_tableau<Q> lobatto_iiia_2() { return {{q(0), q(1)}, {{q(0), q(0)}, {q(1, 2), q(1, 2)}}, {q(1, 2), q(1, 2)}}; }
-inline rk_tableau<Q> lobatto_iiib_2() { return {{q(0), q(1)}, {{q(1, 2), q(0)}, {q(1, 2), q(0)}}, {q(1, 2), q(1, 2)}}; }
+inline tableau lobatto_iiia_2() { return rk({q(0), q(1)}, {{q(0), q(0)}, {q(1, 2), q(1, 2)}}, {q(1, 2), q(1, 2)}); }
+inline tableau lobatto_iiib_2() { return rk({q(0), q(1)}, {{q(1, 2), q(0)}, {q(1, 2), q(0)}}, {q(1, 2), q(1, 2)}); }
 /// Two implicit midpoint steps of sizes h/3 and 2h/3: symplectic (b_i a_ij + b_j a_ji = b_i b_j,
 /// HLW section VI.4), order 2, not symmetric.
-inline rk_tableau<Q> composed_midpoint() {
-  return {{q(1, 6), q(2, 3)}, {{q(1, 6), q(0)}, {q(1, 3), q(1, 3)}}, {q(1, 3), q(2, 3)}};
+inline tableau composed_midpoint() {
+  return rk({q(1, 6), q(2, 3)}, {{q(1, 6), q(0)}, {q(1, 3), q(1, 3)}}, {q(1, 3), q(2, 3)});
 }
 
 }  // namespace bseries_test_methods

@@ -117,10 +117,10 @@ TEST_CASE("bseries modified equation: Stormer-Verlet as a Lobatto IIIA-IIIB pair
   const int p = trees.leaf(0), qq = trees.leaf(1);
   const int p_qq = trees.find(0, {qq, qq}), p_q_p = trees.find(0, {trees.find(1, {p})});
   const int q_pp = trees.find(1, {p, p}), q_p_q = trees.find(1, {trees.find(0, {qq})});
-  struct variant { prk_tableau<Q> pair; Q p_qq, p_q_p, q_pp, q_p_q; };
+  struct variant { tableau pair; Q p_qq, p_q_p, q_pp, q_p_q; };
   const std::vector<variant> variants = {
-      {{lobatto_iiib_2(), lobatto_iiia_2()}, q(1, 6), q(1, 12), q(-1, 12), q(-1, 6)},   // half steps in p
-      {{lobatto_iiia_2(), lobatto_iiib_2()}, q(-1, 12), q(-1, 6), q(1, 6), q(1, 12)},   // half steps in q
+      {pair_of(lobatto_iiib_2(), lobatto_iiia_2()), q(1, 6), q(1, 12), q(-1, 12), q(-1, 6)},   // half steps in p
+      {pair_of(lobatto_iiia_2(), lobatto_iiib_2()), q(-1, 12), q(-1, 6), q(1, 6), q(1, 12)},   // half steps in q
   };
   for (const variant& v : variants) {
     const auto b = modified_field(trees, elementary_weights(trees, v.pair));

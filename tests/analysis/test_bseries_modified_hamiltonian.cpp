@@ -88,7 +88,7 @@ TEST_CASE("bseries modified Hamiltonian: exists for a symplectic method, refused
   const tree_set trees(7, 1);
   // Two midpoint steps of sizes h/3 and 2h/3 (symplectic, HLW section VI.4; see
   // test_bseries_symplectic_conditions.cpp): an h^3 term (order 4) appears.
-  const rk_tableau<Q> composed = composed_midpoint();
+  const tableau composed = composed_midpoint();
   const auto b = modified_field(trees, elementary_weights(trees, composed));
   const auto terms = modified_hamiltonian(trees, b);
   // The h^3 term by hand: the order-4 free trees are the path (superfluous, [tau] o [tau]) and

@@ -57,17 +57,17 @@ TEST_CASE("bseries series: orders of partitioned pairs from their P-series", "[b
   const tree_set trees(5, 2);
   // Stormer-Verlet as the Lobatto IIIA-IIIB pair with s = 2, in both assignments of the
   // colours: order 2 exactly.
-  CHECK(series_order(trees, elementary_weights(trees, prk_tableau<Q>{lobatto_iiib_2(), lobatto_iiia_2()})) == 2);
-  CHECK(series_order(trees, elementary_weights(trees, prk_tableau<Q>{lobatto_iiia_2(), lobatto_iiib_2()})) == 2);
+  CHECK(series_order(trees, elementary_weights(trees, pair_of(lobatto_iiib_2(), lobatto_iiia_2()))) == 2);
+  CHECK(series_order(trees, elementary_weights(trees, pair_of(lobatto_iiia_2(), lobatto_iiib_2()))) == 2);
   // Lobatto IIIA-IIIB with s = 3: order 4 (each method alone is of order 4 on its own trees
   // too, but the pair mixes them on bi-coloured trees).
-  CHECK(series_order(trees, elementary_weights(trees, prk_tableau<Q>{lobatto_iiia_3(), lobatto_iiib_3()})) == 4);
+  CHECK(series_order(trees, elementary_weights(trees, pair_of(lobatto_iiia_3(), lobatto_iiib_3()))) == 4);
   // Symplectic Euler: implicit Euler for one component, explicit Euler for the other.
-  const rk_tableau<Q> implicit_euler{{q(1)}, {{q(1)}}, {q(1)}};
-  CHECK(series_order(trees, elementary_weights(trees, prk_tableau<Q>{implicit_euler, explicit_euler()})) == 1);
+  const tableau implicit_euler = rk({q(1)}, {{q(1)}}, {q(1)});
+  CHECK(series_order(trees, elementary_weights(trees, pair_of(implicit_euler, explicit_euler()))) == 1);
   // The same method on both components is the Runge-Kutta method: its P-series is its
   // B-series with the colours forgotten, so the order is that of the method.
-  CHECK(series_order(trees, elementary_weights(trees, prk_tableau<Q>{radau_iia_2(), radau_iia_2()})) == 3);
+  CHECK(series_order(trees, elementary_weights(trees, pair_of(radau_iia_2(), radau_iia_2()))) == 3);
 }
 
 TEST_CASE("bseries series: P-series weights by hand for Stormer-Verlet", "[bseries]") {
@@ -76,7 +76,7 @@ TEST_CASE("bseries series: P-series weights by hand for Stormer-Verlet", "[bseri
   // b^T (Ahat 1) = 1/2 (0) + 1/2 (1) = 1/2; a q-rooted tree with one p-leaf: b^T (A 1) = 1/2;
   // a p-root over a q-vertex over a p-leaf: b^T (Ahat (A 1)) = 1/2 (1/2 (1/2) + 1/2 (1/2)) = 1/4.
   const tree_set trees(3, 2);
-  const auto a = elementary_weights(trees, prk_tableau<Q>{lobatto_iiib_2(), lobatto_iiia_2()});
+  const auto a = elementary_weights(trees, pair_of(lobatto_iiib_2(), lobatto_iiia_2()));
   const int p = trees.leaf(0), qq = trees.leaf(1);
   CHECK(a[static_cast<std::size_t>(trees.find(0, {qq}))] == q(1, 2));
   CHECK(a[static_cast<std::size_t>(trees.find(1, {p}))] == q(1, 2));
@@ -88,11 +88,11 @@ TEST_CASE("bseries series: P-series weights by hand for Stormer-Verlet", "[bseri
 TEST_CASE("bseries series: bad tableaux and tree sets are refused with a reason", "[bseries]") {
   const tree_set one(3, 1), two(3, 2);
   CHECK_THROWS_AS(elementary_weights(two, explicit_euler()), std::invalid_argument);
-  CHECK_THROWS_AS(elementary_weights(one, prk_tableau<Q>{explicit_euler(), explicit_euler()}), std::invalid_argument);
-  rk_tableau<Q> ragged = classical_rk4();
-  ragged.A[2].pop_back();
+  CHECK_THROWS_AS(elementary_weights(one, pair_of(explicit_euler(), explicit_euler())), std::invalid_argument);
+  tableau ragged = classical_rk4();
+  ragged.a[2].pop_back();
   CHECK_THROWS_AS(elementary_weights(one, ragged), std::invalid_argument);
-  CHECK_THROWS_AS(elementary_weights(two, prk_tableau<Q>{lobatto_iiia_2(), explicit_euler()}), std::invalid_argument);
+  CHECK_THROWS_AS(elementary_weights(two, pair_of(lobatto_iiia_2(), explicit_euler())), std::invalid_argument);
   CHECK_THROWS_AS(local_error_coefficients(one, std::vector<Q>(2)), std::invalid_argument);
 }
 

@@ -22,7 +22,7 @@ namespace bseries_symplectic_conditions_test {
 using namespace bseries_test_methods;
 using namespace geomint::analysis::bseries;
 
-symplecticity_verdict verdict_of(const tree_set& trees, const rk_tableau<Q>& method) {
+symplecticity_verdict verdict_of(const tree_set& trees, const tableau& method) {
   return check_symplecticity_conditions(trees, modified_field(trees, elementary_weights(trees, method)));
 }
 
@@ -38,7 +38,7 @@ TEST_CASE("bseries symplectic conditions: symplectic methods satisfy them up to 
   // order 2 but is not symmetric (its adjoint takes the steps in the other order), so its
   // modified field has an h^3 term (a method is symmetric iff its modified field has only even
   // powers of h, HLW section IX.2): the conditions are not met trivially by zeros.
-  const rk_tableau<Q> composed = composed_midpoint();
+  const tableau composed = composed_midpoint();
   CHECK(verdict_of(trees, composed).holds);
   const auto b = modified_field(trees, elementary_weights(trees, composed));
   bool odd_power_term = false;
@@ -56,20 +56,16 @@ TEST_CASE("bseries symplectic conditions: explicit Euler fails at order 2", "[bs
   CHECK(euler.v == trees.leaf(0));
 }
 
-symplecticity_verdict verdict_of(const tree_set& trees, const prk_tableau<Q>& pair) {
-  return check_symplecticity_conditions(trees, modified_field(trees, elementary_weights(trees, pair)));
-}
-
 TEST_CASE("bseries symplectic conditions: partitioned pairs on P-trees", "[bseries]") {
   const tree_set trees(6, 2);
-  const rk_tableau<Q> implicit_euler{{q(1)}, {{q(1)}}, {q(1)}};
+  const tableau implicit_euler = rk({q(1)}, {{q(1)}}, {q(1)});
   // Symplectic for every partitioned H (HLW section VI.4: b_i = bhat_i and
   // b_i ahat_ij + bhat_j a_ji = b_i bhat_j): Stormer-Verlet in both variants, Lobatto
   // IIIA-IIIB with s = 3, both symplectic Euler methods, and a symplectic RK method on both.
-  const std::vector<prk_tableau<Q>> symplectic = {
-      {lobatto_iiib_2(), lobatto_iiia_2()}, {lobatto_iiia_2(), lobatto_iiib_2()},
-      {lobatto_iiia_3(), lobatto_iiib_3()}, {implicit_euler, explicit_euler()},
-      {explicit_euler(), implicit_euler},   {composed_midpoint(), composed_midpoint()}};
+  const std::vector<tableau> symplectic = {
+      pair_of(lobatto_iiib_2(), lobatto_iiia_2()), pair_of(lobatto_iiia_2(), lobatto_iiib_2()),
+      pair_of(lobatto_iiia_3(), lobatto_iiib_3()), pair_of(implicit_euler, explicit_euler()),
+      pair_of(explicit_euler(), implicit_euler),   pair_of(composed_midpoint(), composed_midpoint())};
   for (const auto& pair : symplectic) {
     const symplecticity_verdict verdict = verdict_of(trees, pair);
     CHECK(verdict.holds);
@@ -78,8 +74,8 @@ TEST_CASE("bseries symplectic conditions: partitioned pairs on P-trees", "[bseri
   // Not symplectic: Lobatto IIIA with s = 3 on both components (2 b_1 a_11 = 0 != b_1^2), so
   // some condition fails; explicit Euler on both: b(p[q]) = b(q[p]) = -1/2 (the one-colour
   // b([tau]) on either colouring), so b(p o q) + b(q o p) = -1 at order 2.
-  CHECK_FALSE(verdict_of(trees, prk_tableau<Q>{lobatto_iiia_3(), lobatto_iiia_3()}).holds);
-  const symplecticity_verdict euler = verdict_of(trees, prk_tableau<Q>{explicit_euler(), explicit_euler()});
+  CHECK_FALSE(verdict_of(trees, pair_of(lobatto_iiia_3(), lobatto_iiia_3())).holds);
+  const symplecticity_verdict euler = verdict_of(trees, pair_of(explicit_euler(), explicit_euler()));
   CHECK_FALSE(euler.holds);
   CHECK(euler.failing_order == 2);
   CHECK(euler.failed == symplecticity_condition::butcher_products);
@@ -87,8 +83,8 @@ TEST_CASE("bseries symplectic conditions: partitioned pairs on P-trees", "[bseri
   // bhat = (1, 0) with Ahat = [[1/2, 0], [1/2, 0]] for q. Then a(p[p]) = b^T A 1 = 1/2 and
   // a(q[p]) = bhat^T A 1 = 0, so b(p[p]) = 1/2 - 1/2 = 0 != b(q[p]) = 0 - 1/2: the root-colour
   // condition fails at order 2.
-  const rk_tableau<Q> other_weights{{q(0), q(1)}, {{q(1, 2), q(0)}, {q(1, 2), q(0)}}, {q(1), q(0)}};
-  const symplecticity_verdict mixed = verdict_of(trees, prk_tableau<Q>{lobatto_iiia_2(), other_weights});
+  const tableau other_weights = rk({q(0), q(1)}, {{q(1, 2), q(0)}, {q(1, 2), q(0)}}, {q(1), q(0)});
+  const symplecticity_verdict mixed = verdict_of(trees, pair_of(lobatto_iiia_2(), other_weights));
   CHECK_FALSE(mixed.holds);
   CHECK(mixed.failing_order == 2);
   CHECK(mixed.failed == symplecticity_condition::root_colour);

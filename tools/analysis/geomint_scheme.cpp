@@ -6,7 +6,10 @@
 //   geomint-scheme --analyse [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all] [--csv]
 //       order (Nystrom trees), stage order, symplecticity, symmetry, error constants, linear
 //       stability (interval of periodicity or of absolute stability), dissipation, phase lag
-//   geomint-scheme --tableau [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all]
+//   geomint-scheme --analyse --tableau FILE [--csv]
+//       order (B-/P-series against the exact flow) and symplecticity of the method of a tableau
+//       file, exactly over its coefficients (include/geomint/analysis/bseries/method_analysis.hpp)
+//   geomint-scheme --print-tableau [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all]
 //       the exact tableau (node polynomial and monomial-basis matrices, or rationals)
 //
 // --m applies to lpf and galerkin, --nodes to lpf only: given to another scheme they are usage
@@ -24,10 +27,12 @@
 #include <vector>
 
 #include "../common/cli.hpp"
+#include "geomint/analysis/bseries/method_analysis.hpp"
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/order_conditions.hpp"
 #include "geomint/analysis/rkn_tableau.hpp"
 #include "geomint/analysis/scheme_structure.hpp"
+#include "geomint/methods/tableau_file.hpp"
 
 namespace {
 
@@ -35,8 +40,9 @@ using namespace geomint;
 using decimal = boost::multiprecision::cpp_bin_float_50;
 
 const char* usage_text =
-    "usage: geomint-scheme [--analyse|--tableau] [--scheme lpf|midpoint|trapezoidal|galerkin]\n"
+    "usage: geomint-scheme [--analyse|--print-tableau] [--scheme lpf|midpoint|trapezoidal|galerkin]\n"
     "                      [--nodes F[,F...]|all] [--m M|A..B|all] [--csv]\n"
+    "       geomint-scheme --analyse --tableau FILE [--csv]\n"
     "  Exact analysis of a scheme from its Runge-Kutta-Nystrom tableau (natural systems).\n"
     "  default     the two-step form x^{k+1} = R(tau) x^k - x^{k-1} for L = xdot^2/2 - x^2/2:\n"
     "              R = P(tau^2)/Q(tau^2) in lowest terms and R - 2 cos tau = c tau^(p+2) + ...\n"
@@ -50,8 +56,15 @@ const char* usage_text =
     "              phase_lag_order,kind,stage_order,stability,dissipation_order with stability\n"
     "              periodic|absolute|none (a-stable is for RK methods on y' = lambda y), interval\n"
     "              inf, 0 (empty) or tau* to 30 digits, dissipation_order inf when det M = 1\n"
-    "  --tableau   the exact tableau: node polynomial N and the matrices on Q[x]/(N) in the\n"
-    "              monomial basis (or rationals), with 30-digit decimals of c, a, bbar, b\n"
+    "  --tableau FILE  with --analyse: the method of a tableau file (docs/guide/tableau_files.md),\n"
+    "              analysed exactly over its coefficients: order from the B-series (rk, trees to\n"
+    "              order 10) or P-series (prk; rkn and nystrom on their Nystrom trees; to order 8)\n"
+    "              against the exact flow, symplecticity by the tree conditions up to that order\n"
+    "              (rk, prk) or the exact RKN conditions (rkn, nystrom); the same CSV columns, '-'\n"
+    "              for those not computed for a file; excludes --scheme, --nodes and --m\n"
+    "  --print-tableau  the exact tableau of a built-in scheme: node polynomial N and the\n"
+    "              matrices on Q[x]/(N) in the monomial basis (or rationals), with 30-digit\n"
+    "              decimals of c, a, bbar, b\n"
     "  --scheme S  lpf (default), midpoint, trapezoidal or galerkin (Gauss quadrature, m = 1..8)\n"
     "  --nodes F   equispaced (default), gauss-interior, lobatto, chebyshev (also gauss_interior,\n"
     "              gauss-lobatto, chebyshev-lobatto, ...), a comma list, or all (lpf only)\n"
@@ -145,6 +158,7 @@ std::string stability_kind_text(const linear_stability_result& r) {
 
 struct options {
   std::string mode = "two-step";
+  std::string tableau_file;  ///< --tableau FILE
   std::string scheme = "lpf";
   std::vector<std::string> families = {"equispaced"};
   int m_first = 2, m_last = 2;
@@ -186,10 +200,32 @@ int two_step(const options& o) {
   return cli::finish_stdout("geomint-scheme");
 }
 
+const char* analyse_header =
+    "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,stability_interval,phase_lag_order,kind,"
+    "stage_order,stability,dissipation_order\n";
+
+/// --analyse --tableau FILE: the exact series analysis of the file's method (the tableau read
+/// by read_tableau_file, the data geomint-run --tableau integrates).
+int analyse_file(const options& o, const methods::tableau_data<methods::field_element>& t) {
+  const analysis::bseries::method_analysis r = analysis::bseries::analyse_method(t);
+  const std::string order = std::to_string(r.order) + (r.order_is_lower_bound ? "+" : "");
+  const std::string name = t.name.empty() ? std::string("-") : t.name;
+  const std::string kind(methods::to_string(t.kind));
+  if (o.csv) {
+    std::cout << analyse_header << name << ",-,-," << t.stages << "," << order << "," << (r.symplectic ? "yes" : "no")
+              << ",-,-,-,-," << kind << ",-,-,-\n";
+  } else {
+    std::cout << "tableau " << o.tableau_file << ": " << name << " (" << kind << ", " << t.stages << " stages)\n"
+              << "  order " << order << " (" << (r.colours == 1 ? "B-series, rooted trees" : "P-series, bi-coloured trees")
+              << (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom ? " of the Nystrom form" : "")
+              << " up to order " << r.tree_order << ")\n"
+              << "  symplectic: " << (r.symplectic ? "yes" : "no") << " (" << r.symplecticity_basis << ")\n";
+  }
+  return cli::finish_stdout("geomint-scheme");
+}
+
 int analyse(const options& o) {
-  if (o.csv)
-    std::cout << "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,stability_interval,phase_lag_order,kind,"
-                 "stage_order,stability,dissipation_order\n";
+  if (o.csv) std::cout << analyse_header;
   const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
   const std::vector<std::string> families = o.scheme == "lpf" ? o.families : std::vector<std::string>{"-"};
   for (const std::string& family : families)
@@ -286,13 +322,16 @@ int main(int argc, char** argv) {
   cli::parser cl("geomint-scheme", usage_text);
   cl.toggle("--analyse", [&] { o.mode = "analyse"; });
   cl.toggle("--analyze", [&] { o.mode = "analyse"; });
-  cl.toggle("--tableau", [&] { o.mode = "tableau"; });
+  cl.toggle("--print-tableau", [&] { o.mode = "tableau"; });
+  cl.value("--tableau", [&](const std::string& v) { o.tableau_file = v; });
   cl.toggle("--csv", [&] { o.csv = true; });
   cl.toggle("--all", [&] {
     o.m_text = "all";
     o.m_given = true;
   });
+  bool scheme_given = false;
   cl.value("--scheme", [&](const std::string& v) {
+    scheme_given = true;
     o.scheme = cli::parse_choice("--scheme", v, {"lpf", "midpoint", "trapezoidal", "galerkin"});
   });
   cl.value("--nodes", [&](const std::string& v) {
@@ -300,7 +339,28 @@ int main(int argc, char** argv) {
     o.nodes_given = true;
   });
   cl.value("--m", [&](const std::string& v) { o.m_text = v; o.m_given = true; });
+  // --tableau takes a FILE; a bare --tableau names --print-tableau (a built-in scheme's tableau).
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--tableau" && (i + 1 == argc || std::string(argv[i + 1]).rfind("--", 0) == 0))
+      return cl.fail("--tableau needs a value: a tableau FILE (to print a built-in scheme's tableau use --print-tableau)");
   if (const auto done = cl.parse(argc, argv)) return *done;
+  if (!o.tableau_file.empty()) {
+    if (o.mode != "analyse") return cl.fail("--tableau FILE is analysed with --analyse (--print-tableau prints a built-in scheme)");
+    if (o.m_given || o.nodes_given || scheme_given)
+      return cl.fail("--scheme, --nodes and --m choose a built-in scheme: they exclude --tableau FILE");
+    methods::tableau_data<methods::field_element> t;
+    try {
+      t = methods::read_tableau_file(o.tableau_file);
+    } catch (const methods::tableau_file_error& e) {
+      return cl.fail(e.what());
+    }
+    try {
+      return analyse_file(o, t);
+    } catch (const std::exception& e) {
+      std::cerr << "geomint-scheme: " << o.tableau_file << ": " << e.what() << "\n";
+      return cli::finish_stdout("geomint-scheme", cli::exit_run_failure);
+    }
+  }
   try {
     const int lo = o.scheme == "galerkin" ? 1 : 2;
     const int hi = o.scheme == "galerkin" ? max_exact_stages : max_exact_m;

@@ -11,93 +11,116 @@
 /// root colour picks A or Ahat in the factor sum_j a_ij g_j(u). A Runge-Kutta-Nystrom method
 /// written as q' = v, v' = f(q) is such a pair.
 ///
-/// The coefficient type T is a template parameter (exact: boost::multiprecision::cpp_rational;
-/// later an algebraic number field); only +, *, / and construction from int are used.
+/// The tableaux are those the integrator runs (geomint::methods::tableau_data, methods/tableau.hpp).
+/// The coefficient type T is a template parameter (exact: boost::multiprecision::cpp_rational, or
+/// methods::field_element for Q(r)); only +, *, /, == and construction from int are used.
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "geomint/analysis/bseries/trees.hpp"
+#include "geomint/methods/tableau.hpp"
 
 namespace geomint::analysis::bseries {
 
-/// A Runge-Kutta tableau (c, A, b) with s stages: A is s x s (row i holds a_i1..a_is).
-template <class T>
-struct rk_tableau {
-  std::vector<T> c;
-  std::vector<std::vector<T>> A;
-  std::vector<T> b;
-  std::size_t stages() const { return b.size(); }
-};
+using methods::tableau_data;
 
-/// A partitioned Runge-Kutta pair: `first` integrates the colour-0 component y, `second` the
-/// colour-1 component z; both have the same number of stages.
+/// The partitioned pair (first on colour 0, second on colour 1) of two Runge-Kutta tableaux of
+/// the same number of stages, as one `prk` tableau (c from the first).
 template <class T>
-struct prk_tableau {
-  rk_tableau<T> first;
-  rk_tableau<T> second;
-};
+tableau_data<T> pair_of(const tableau_data<T>& first, const tableau_data<T>& second) {
+  if (first.kind != methods::method_kind::rk || second.kind != methods::method_kind::rk)
+    throw std::invalid_argument("geomint::analysis::bseries::pair_of: both parts must be Runge-Kutta tableaux");
+  tableau_data<T> d = first;
+  d.kind = methods::method_kind::prk;
+  d.ahat = second.a;
+  d.bhat = second.b;
+  return d;
+}
 
 namespace detail {
+/// One colour's (A, b).
 template <class T>
-void check_tableau(const rk_tableau<T>& m, std::size_t stages, const char* which) {
+struct weights_of_colour {
+  const std::vector<std::vector<T>>* a;
+  const std::vector<T>* b;
+};
+
+template <class T>
+void check_tableau(const weights_of_colour<T>& m, std::size_t stages, std::size_t c_size, const char* which) {
   const std::string name = std::string("geomint::analysis::bseries: the ") + which + " tableau ";
-  if (m.b.empty()) throw std::invalid_argument(name + "has no stages (b is empty)");
-  if (m.b.size() != stages) throw std::invalid_argument(name + "has a different number of stages than the other");
-  if (m.c.size() != stages) throw std::invalid_argument(name + "has c of a different length than b");
-  if (m.A.size() != stages) throw std::invalid_argument(name + "has A with a number of rows different from the length of b");
-  for (const auto& row : m.A)
+  if (m.b->empty()) throw std::invalid_argument(name + "has no stages (b is empty)");
+  if (m.b->size() != stages) throw std::invalid_argument(name + "has a different number of stages than the other");
+  if (c_size != stages) throw std::invalid_argument(name + "has c of a different length than b");
+  if (m.a->size() != stages) throw std::invalid_argument(name + "has A with a number of rows different from the length of b");
+  for (const auto& row : *m.a)
     if (row.size() != stages) throw std::invalid_argument(name + "has a row of A of a length different from the length of b");
 }
 
-/// Elementary weights with one tableau per colour (weights[colour]).
+/// Elementary weights with one (A, b) per colour (weights[colour]); with `wanted`, only for the
+/// trees it marks (a set closed under taking subtrees), zero for the others.
 template <class T>
-std::vector<T> elementary_weights(const tree_set& trees, const rk_tableau<T>* const* weights) {
-  const std::size_t s = weights[0]->stages();
+std::vector<T> elementary_weights(const tree_set& trees, const weights_of_colour<T>* weights,
+                                  const std::vector<bool>* wanted = nullptr) {
+  const std::size_t s = weights[0].b->size();
   const auto n = static_cast<std::size_t>(trees.size());
   // g[t][i] = g_i(t); fed[t][i] = sum_j a^{colour of t}_ij g_j(t), the factor t contributes
   // as a subtree.
   std::vector<std::vector<T>> g(n), fed(n);
-  std::vector<T> phi(n);
+  std::vector<T> phi(n, T(0));
   for (std::size_t t = 0; t < n; ++t) {
+    if (wanted && !(*wanted)[t]) continue;
     const rooted_tree& tree = trees[static_cast<int>(t)];
     g[t].assign(s, T(1));
     for (int u : tree.subtrees)
       for (std::size_t i = 0; i < s; ++i) g[t][i] *= fed[static_cast<std::size_t>(u)][i];
-    const rk_tableau<T>& own = *weights[tree.colour];
+    const weights_of_colour<T>& own = weights[tree.colour];
     fed[t].assign(s, T(0));
     phi[t] = T(0);
     for (std::size_t i = 0; i < s; ++i) {
-      for (std::size_t j = 0; j < s; ++j) fed[t][i] += own.A[i][j] * g[t][j];
-      phi[t] += own.b[i] * g[t][i];
+      for (std::size_t j = 0; j < s; ++j) fed[t][i] += (*own.a)[i][j] * g[t][j];
+      phi[t] += (*own.b)[i] * g[t][i];
     }
   }
   return phi;
 }
 }  // namespace detail
 
-/// a(t) = Phi(t) for every tree of a one-colour tree_set: the B-series of one step of the
-/// Runge-Kutta method (a(empty) = 1).
+/// a(t) = Phi(t) for every tree: the B-series of one step of a Runge-Kutta tableau (kind rk,
+/// one-colour trees) or the P-series of a partitioned pair (kind prk, two-colour trees; (A, b)
+/// on colour 0, (Ahat, bhat) on colour 1); a(empty) = 1. Other kinds: see
+/// bseries/partitioned_form.hpp. With `wanted` (one entry per tree, a set closed under taking
+/// subtrees), only the marked trees are computed; the others are zero.
 template <class T>
-std::vector<T> elementary_weights(const tree_set& trees, const rk_tableau<T>& method) {
-  if (trees.colours() != 1)
-    throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: a Runge-Kutta tableau needs one-colour trees");
-  detail::check_tableau(method, method.stages(), "Runge-Kutta");
-  const rk_tableau<T>* weights[1] = {&method};
-  return detail::elementary_weights(trees, weights);
+std::vector<T> elementary_weights(const tree_set& trees, const tableau_data<T>& method,
+                                  const std::vector<bool>* wanted = nullptr) {
+  const detail::weights_of_colour<T> weights[2] = {{&method.a, &method.b}, {&method.ahat, &method.bhat}};
+  if (method.kind == methods::method_kind::rk) {
+    if (trees.colours() != 1)
+      throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: a Runge-Kutta tableau needs one-colour trees");
+    detail::check_tableau(weights[0], method.b.size(), method.c.size(), "Runge-Kutta");
+  } else if (method.kind == methods::method_kind::prk) {
+    if (trees.colours() != 2)
+      throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: a partitioned pair needs two-colour trees");
+    detail::check_tableau(weights[0], method.b.size(), method.c.size(), "first (colour 0)");
+    detail::check_tableau(weights[1], method.b.size(), method.c.size(), "second (colour 1)");
+  } else {
+    throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: an rk or prk tableau is needed (rkn and nystrom: partitioned_form_of)");
+  }
+  if (wanted && wanted->size() != static_cast<std::size_t>(trees.size()))
+    throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: `wanted` needs one entry per tree");
+  return detail::elementary_weights(trees, weights, wanted);
 }
 
-/// a(t) = Phi(t) for every tree of a two-colour tree_set: the P-series of one step of the
-/// partitioned Runge-Kutta pair (a(empty_y) = a(empty_z) = 1).
-template <class T>
-std::vector<T> elementary_weights(const tree_set& trees, const prk_tableau<T>& method) {
-  if (trees.colours() != 2)
-    throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: a partitioned pair needs two-colour trees");
-  detail::check_tableau(method.first, method.first.stages(), "first (colour 0)");
-  detail::check_tableau(method.second, method.first.stages(), "second (colour 1)");
-  const rk_tableau<T>* weights[2] = {&method.first, &method.second};
-  return detail::elementary_weights(trees, weights);
+/// The same for a fixed-size methods:: tableau (rk or prk).
+template <class K, int S>
+std::vector<K> elementary_weights(const tree_set& trees, const methods::rk<K, S>& method) {
+  return elementary_weights(trees, methods::data_of(method));
+}
+template <class K, int S>
+std::vector<K> elementary_weights(const tree_set& trees, const methods::prk<K, S>& method) {
+  return elementary_weights(trees, methods::data_of(method));
 }
 
 /// e(t) = 1/gamma(t): the B-/P-series of the exact flow (HLW section III.1.2).
