@@ -125,7 +125,7 @@ geomint_cli_corpus(geomint-scheme "--m does not apply to --scheme midpoint" --sc
 geomint_cli_corpus(geomint-scheme "--m does not apply to --scheme trapezoidal" --analyse --scheme trapezoidal --m 2..4)
 geomint_cli_corpus(geomint-scheme "--m does not apply to --scheme midpoint" --scheme midpoint --all)
 geomint_cli_corpus(geomint-scheme "--nodes does not apply to --scheme galerkin" --scheme galerkin --nodes lobatto --m 2)
-geomint_cli_corpus(geomint-scheme "--nodes does not apply to --scheme trapezoidal" --tableau --scheme trapezoidal --nodes all)
+geomint_cli_corpus(geomint-scheme "--nodes does not apply to --scheme trapezoidal" --print-tableau --scheme trapezoidal --nodes all)
 
 # Every flag of every tool: a value flag without its value and with an empty value after '=', a
 # switch with a value. geomint_cli_corpus_flag(<tool> <flag> <case> <regex> <args...>) names the
@@ -144,8 +144,8 @@ set(_values_geomint-symplectic ${_study_values} --tau --long-tau --long-steps --
 set(_switches_geomint-symplectic --csv --no-monitor)
 set(_values_geomint-brouwer --system --steps --trajectories --tau)
 set(_switches_geomint-brouwer --windows)
-set(_values_geomint-scheme --scheme --nodes --m)
-set(_switches_geomint-scheme --analyse --analyze --tableau --csv --all)
+set(_values_geomint-scheme --scheme --nodes --m --tableau)
+set(_switches_geomint-scheme --analyse --analyze --print-tableau --csv --all)
 set(_values_geomint-beam --steps --dt --nodes --scheme --every --csv --centreline --snapshots --drift --cayley --reconstruction)
 set(_switches_geomint-beam)
 set(_values_geomint-workprecision --system --digits --t-end --max-seconds --methods --passes)
@@ -181,7 +181,6 @@ geomint_cli_corpus_flag(geomint-brouwer --tau zero "--tau must be a finite numbe
 geomint_cli_corpus_flag(geomint-brouwer --tau range "--tau is out of range" --tau 1e-400)
 geomint_cli_corpus_flag(geomint-scheme --scheme bad "--scheme must be one of" --scheme rk4)
 geomint_cli_corpus_flag(geomint-scheme --m range "--m range '5..3' is empty" --m 5..3)
-geomint_cli_corpus_flag(geomint-scheme --tableau families "--tableau takes one node family" --tableau --nodes equispaced,gauss-lobatto --m 3)
 geomint_cli_corpus_flag(geomint-beam --cayley bad "--cayley must be one of previous, current, midpoint" --cayley next)
 geomint_cli_corpus_flag(geomint-beam --reconstruction bad "--reconstruction must be one of per-node, strain" --reconstruction x)
 geomint_cli_corpus_flag(geomint-beam --snapshots range "--snapshots is out of range" --snapshots 10001)
