@@ -127,16 +127,18 @@ constexpr lu_extent<T, N> lu_size() {
 }
 }  // namespace linalg::detail
 
-/// LU factorisation with complete pivoting (P A Q = L U) of a small fixed-size matrix, kept for
-/// reuse (e.g. across Newton iterations); singular to working precision when the largest
+/// LU factorisation with complete pivoting (P A Q = L U) of a matrix of compile-time size, kept
+/// for reuse (e.g. across Newton iterations); singular to working precision when the largest
 /// remaining pivot is <= N eps max|A| (linalg::detail::lu_factor). Written out instead of
 /// Eigen::FullPivLU: same algorithm, but a fraction of the compile time per matrix size, which
-/// matters for the many (m, n) sizes a program instantiates.
+/// matters for the many (m, n) sizes a program instantiates. The factors are a square_matrix:
+/// on the heap, allocated with the object, when they are large.
 template <class T, int N>
 class lu_small {
  public:
   /// False if A is singular to working precision or not finite.
-  bool factor(const mat<T, N>& A) {
+  template <class Derived>
+  bool factor(const Eigen::MatrixBase<Derived>& A) {
     lu_ = A;
     return linalg::detail::lu_factor_with<false, T>(lu_.data(), linalg::detail::lu_size<T, N>(), row_.data(), col_.data());
   }
@@ -148,7 +150,7 @@ class lu_small {
   }
 
  private:
-  mat<T, N> lu_ = mat<T, N>::Zero();
+  square_matrix<T, N> lu_ = square_matrix<T, N>::Zero(N, N);
   std::array<int, N> row_{}, col_{};
 };
 
@@ -227,10 +229,10 @@ class lu_in_double {
   bool blocked_ = false;
 };
 
-/// Solves A x = b for a small fixed-size A (lu_small); false if A is singular to working
-/// precision (x = 0) or not finite (x = NaN), or if x is not finite.
-template <class T, int N>
-bool solve_small(const mat<T, N>& A, const vec<T, N>& b, vec<T, N>& x) {
+/// Solves A x = b for an N x N matrix A (mat or square_matrix; lu_small); false if A is singular
+/// to working precision (x = 0) or not finite (x = NaN), or if x is not finite.
+template <class T, int N, class Matrix>
+bool solve_small(const Matrix& A, const vec<T, N>& b, vec<T, N>& x) {
   lu_small<T, N> lu;
   if (!lu.factor(A)) {
     x.setConstant(all_finite(A) ? T(0) : std::numeric_limits<T>::quiet_NaN());

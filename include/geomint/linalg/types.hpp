@@ -2,6 +2,7 @@
 /// Fixed-size vector and matrix aliases and finiteness checks, for every scalar type.
 
 #include <cmath>
+#include <cstddef>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -21,6 +22,34 @@ struct eigen_scalar_ready : std::true_type {};
 template <class S>
   requires requires { typename S::backend_type; }
 struct eigen_scalar_ready<S> : std::false_type {};
+
+/// Bytes above which an N x N matrix of a compile-time size is kept on the heap (square_matrix):
+/// half of Eigen's limit for a fixed-size object (EIGEN_STACK_ALLOCATION_LIMIT, 128 KiB), the
+/// bound mechanics/lagrangian.hpp also uses. The Newton matrix of an implicit step of m (dof)
+/// unknowns crosses it e.g. for the outer solar system (18 dof) from m = 6 in double and m = 2
+/// in 50 digits; the pendulum and the Kepler problem stay below it at every m up to 16, in
+/// double and in 50 digits.
+inline constexpr std::size_t stack_matrix_bytes = std::size_t(64) * 1024;
+
+/// Whether square_matrix<S, N> is on the heap.
+template <class S, int N>
+inline constexpr bool heap_matrix = sizeof(S) * static_cast<std::size_t>(N) * static_cast<std::size_t>(N) > stack_matrix_bytes;
+
+/// An N x N matrix whose size is known at compile time: fixed-size (no allocation, loops of known
+/// length) up to stack_matrix_bytes, above that a dynamic-size Eigen matrix of N x N on the heap,
+/// so that large systems neither exceed Eigen's fixed-size limit nor fill the stack. Owners of a
+/// large one allocate it once (e.g. with an engine's step memory) and reuse it.
+template <class S, int N>
+using square_matrix = std::conditional_t<heap_matrix<S, N>, Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>, mat<S, N>>;
+
+/// A square_matrix<S, N> of N x N (allocated if it is on the heap), its entries unset.
+template <class S, int N>
+square_matrix<S, N> make_square_matrix() {
+  if constexpr (heap_matrix<S, N>)
+    return square_matrix<S, N>(N, N);
+  else
+    return square_matrix<S, N>();
+}
 
 /// A vector whose size is known at run time only (type-erased steppers, studies).
 template <class S>

@@ -44,7 +44,7 @@ class galerkin_method : public path_method<Sys, T, M, Basis> {
 
   /// The iterations after the first need only first derivatives of L (J is null then). With a
   /// carry (compensated summation) the path starts at q + carry.q and p_k is p + carry.p.
-  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, mat<T, unknowns>* J,
+  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, square_matrix<T, unknowns>* J,
                 const phase_carry<T, n>* carry = nullptr) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
     F.setZero();
@@ -98,7 +98,7 @@ class galerkin_method : public path_method<Sys, T, M, Basis> {
       constexpr int N = (M - 1) * n;
       vec<T, N> z;
       for (int j = 1; j < M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
-      auto residual = [&](const vec<T, N>& zz, vec<T, N>& F, mat<T, N>& J) {
+      auto residual = [&](const vec<T, N>& zz, vec<T, N>& F, square_matrix<T, N>& J) {
         for (int j = 1; j < M; ++j) X.col(j) = zz.template segment<n>((j - 1) * n);
         interior_rows<N>(X, tau, F, J);
       };
@@ -119,7 +119,7 @@ class galerkin_method : public path_method<Sys, T, M, Basis> {
  private:
   /// Rows tau G_1..tau G_{M-1}, columns X_1..X_{M-1} (both ends fixed).
   template <int N>
-  void interior_rows(const controls& X, const T& tau, vec<T, N>& F, mat<T, N>& J) const {
+  void interior_rows(const controls& X, const T& tau, vec<T, N>& F, square_matrix<T, N>& J) const {
     constexpr int blocks = N / n;
     F.setZero();
     J.setZero();

@@ -59,7 +59,7 @@ class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::do
   const Con& constraints() const { return con_; }
 
   /// (The constrained integrator has no compensated summation: the carry is always null.)
-  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& Fv, mat<T, unknowns>* J,
+  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& Fv, square_matrix<T, unknowns>* J,
                 const phase_carry<T, n>* = nullptr) const {
     forward_residual<unknowns, true>(q, p, tau, z, Fv, J);
   }
@@ -97,7 +97,7 @@ class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::do
     vec<T, N> z = vec<T, N>::Zero();
     for (int j = 1; j < M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
     constexpr int mu_offset = (M - 1) * n;
-    auto residual = [&](const vec<T, N>& zz, vec<T, N>& Fv, mat<T, N>& J) {
+    auto residual = [&](const vec<T, N>& zz, vec<T, N>& Fv, square_matrix<T, N>& J) {
       for (int j = 1; j < M; ++j) X.col(j) = zz.template segment<n>((j - 1) * n);
       Fv.setZero();
       J.setZero();
@@ -147,7 +147,7 @@ class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::do
   /// G(q_k)^T nu = 0 (eq. 9 with the jump of eq. 5); interior nodes: eq. (4) and f = 0; with
   /// `keep_ends`, f(X_m) = 0 at t_{k+1} (eq. 5). J (if not null) = dF/dz.
   template <int N, bool keep_ends>
-  void forward_residual(const V& q, const V& p, const T& tau, const vec<T, N>& z, vec<T, N>& Fv, mat<T, N>* J) const {
+  void forward_residual(const V& q, const V& p, const T& tau, const vec<T, N>& z, vec<T, N>& Fv, square_matrix<T, N>* J) const {
     constexpr int mu_offset = M * n;                                 // mu_1..mu_{m-1}
     [[maybe_unused]] constexpr int nu_offset = M * n + (M - 1) * c;  // nu (keep only)
     controls X = unpack_path<T, n, M, N>(z);
@@ -184,7 +184,7 @@ class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::do
     const V a0 = D::acceleration(sys_, q, v0);
     vec<T, N> z = vec<T, N>::Zero();
     pack_path<T, n, M, N>(w_.template quadratic<n>(v0, a0, tau), z);
-    auto residual = [&](const vec<T, N>& zz, vec<T, N>& Fv, mat<T, N>* J) {
+    auto residual = [&](const vec<T, N>& zz, vec<T, N>& Fv, square_matrix<T, N>* J) {
       forward_residual<N, keep_ends>(q, p, tau, zz, Fv, J);
     };
     const T scale = std::numeric_limits<T>::epsilon() * q.template lpNorm<Eigen::Infinity>();
@@ -198,7 +198,7 @@ class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::do
   /// unknowns X_jlo..X_jhi (stored from column 0) and mu_i (column mu_offset + (i-1) c).
   template <int N>
   void interior_rows(const controls& X, const vec<T, N>& z, const T& tau, int i, int row, int jlo, int jhi,
-                     int mu_offset, int constraint_rows, vec<T, N>& Fv, mat<T, N>* J) const {
+                     int mu_offset, int constraint_rows, vec<T, N>& Fv, square_matrix<T, N>* J) const {
     const V x = combine(X, w_.D0, i);
     const V v = combine(X, w_.D1, i) / tau;
     const V a = combine(X, w_.D2, i) / (tau * tau);

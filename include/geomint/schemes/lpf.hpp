@@ -73,7 +73,7 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
   /// Row block 0: tau (dL/dxdot(t_k) - p_k) = 0 (eq. 9 with eq. 11); row blocks 1..m-1:
   /// tau^2 E(x(c_i), xdot(c_i), xddot(c_i)) = 0 (eq. 12). With a carry (compensated summation)
   /// the path starts at q + carry.q and row 0 matches p + carry.p.
-  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, mat<T, unknowns>* J,
+  void residual(const V& q, const V& p, const T& tau, const Z& z, Z& F, square_matrix<T, unknowns>* J,
                 const phase_carry<T, n>* carry = nullptr) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
     const T tau2 = tau * tau;
@@ -166,7 +166,7 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
     constexpr int N = (M - 1) * n;
     vec<T, N> z;
     for (int j = 1; j < M; ++j) z.template segment<n>((j - 1) * n) = X.col(j);
-    auto residual = [&](const vec<T, N>& zz, vec<T, N>& F, mat<T, N>& J) {
+    auto residual = [&](const vec<T, N>& zz, vec<T, N>& F, square_matrix<T, N>& J) {
       for (int j = 1; j < M; ++j) X.col(j) = zz.template segment<n>((j - 1) * n);
       J.setZero();
       const T tau2 = tau * tau;

@@ -356,7 +356,7 @@ class step_skeleton {
   /// Simplified Newton on the method's residual; round-off is judged against eps |q|.
   step_status solve(const V& q, const V& p, const T& tau, const newton_options<T>& opt, unknowns& z,
                     jacobian_cache<T, N>* jac, const phase_carry<T, n>* carry) const {
-    auto residual = [&](const unknowns& zz, unknowns& F, mat<T, N>* J) { method_.residual(q, p, tau, zz, F, J, carry); };
+    auto residual = [&](const unknowns& zz, unknowns& F, square_matrix<T, N>* J) { method_.residual(q, p, tau, zz, F, J, carry); };
     const T scale = std::numeric_limits<T>::epsilon() * q.template lpNorm<Eigen::Infinity>();
     return newton_solve_simplified<N, T>(residual, z, opt, scale, jac);
   }

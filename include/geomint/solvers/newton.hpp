@@ -1,5 +1,8 @@
 #pragma once
-/// Newton's method with fixed-size Eigen matrices (full, and simplified with a reusable factorisation).
+/// Newton's method on unknowns of compile-time size (full, and simplified with a reusable
+/// factorisation). The Newton matrix is a square_matrix (linalg/types.hpp): fixed-size for small
+/// systems, on the heap for large ones, where the simplified solver keeps it in its
+/// jacobian_cache (allocated once with it) instead of allocating it in every solve.
 ///
 /// Convergence is declared when the Newton correction falls below a multiple of the scalar's
 /// epsilon (relative to the iterate), or when, already below eps^(2/3), it stops contracting
@@ -100,7 +103,7 @@ bool rate_bounds_error(const T& rho, const T& size, const T& scale) {
   return rho <= T(1) / T(8) && rho * size <= (T(1) - rho) * std::numeric_limits<T>::epsilon() * scale;
 }
 
-/// Solves F(z) = 0 from z. `residual(z, F, J)` fills F and J = dF/dz.
+/// Solves F(z) = 0 from z. `residual(z, F, J)` fills F and J = dF/dz (a square_matrix<T, N>).
 template <int N, class T, class Fn>
 step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& opt) {
   opt.validate();
@@ -110,7 +113,7 @@ step_status newton_solve(Fn&& residual, vec<T, N>& z, const newton_options<T>& o
   const T floor_level = epsilon_two_thirds<T>();
   step_status st;
   vec<T, N> F;
-  mat<T, N> J;
+  square_matrix<T, N> J = make_square_matrix<T, N>();
   T previous = std::numeric_limits<T>::infinity();
   for (int it = 1; it <= opt.max_iterations; ++it) {
     st.iterations = it;
@@ -147,9 +150,22 @@ struct jacobian_cache {
   bool valid = false;
   T rate = T(0);
 
+ private:
+  struct none {};
+
+ public:
+  /// Where newton_solve_simplified forms the Newton matrix when it is on the heap (allocated
+  /// here once; small sizes form it in a local of the solve instead).
+  [[no_unique_address]] std::conditional_t<heap_matrix<T, N>, square_matrix<T, N>, none> matrix = [] {
+    if constexpr (heap_matrix<T, N>)
+      return make_square_matrix<T, N>();
+    else
+      return none{};
+  }();
+
   /// Factorises J, in double if `try_double` and J rounds to a finite double matrix that is not
   /// singular there, else in T. False if J is singular in T.
-  bool factor(const mat<T, N>& J, [[maybe_unused]] bool try_double) {
+  bool factor(const square_matrix<T, N>& J, [[maybe_unused]] bool try_double) {
     in_double = false;
     if constexpr (!std::is_floating_point_v<T>) {
       if (try_double && lu_double.factor(J)) {
@@ -172,7 +188,7 @@ struct jacobian_cache {
 /// iterate (or taken from `cache` if that holds a valid factorisation) and reused while the
 /// iteration contracts; the other iterations evaluate the residual alone, which for the
 /// variational integrators needs one level of AD less. `residual(z, F, J)` fills F and, if the
-/// pointer J is not null, J = dF/dz.
+/// pointer J (to a square_matrix<T, N>) is not null, J = dF/dz.
 ///
 /// Convergence: the correction is at the eps level relative to `scale` + |z|, or below
 /// `tolerance_ulps` eps with a contraction rate rho <= 1/8 (so the error left, about rho times
@@ -194,7 +210,13 @@ step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_op
   }
   jacobian_cache<T, N>& jc = *cache;
   vec<T, N> F;
-  mat<T, N> J;
+  square_matrix<T, N> local;  // the matrix of a small system; empty (not allocated) for a large one
+  square_matrix<T, N>& J = [&]() -> square_matrix<T, N>& {
+    if constexpr (heap_matrix<T, N>)
+      return jc.matrix;
+    else
+      return local;
+  }();
   bool refresh = !jc.valid;
   jc.valid = false;
   jc.rate = T(0);
@@ -205,7 +227,7 @@ step_status newton_solve_simplified(Fn&& residual, vec<T, N>& z, const newton_op
   for (int it = 1; it <= opt.max_iterations; ++it) {
     st.iterations = it;
     const bool fresh = refresh;
-    residual(z, F, fresh ? &J : static_cast<mat<T, N>*>(nullptr));
+    residual(z, F, fresh ? &J : static_cast<square_matrix<T, N>*>(nullptr));
     if (!all_finite(F) || (fresh && !all_finite(J))) {
       st.reason = step_failure::non_finite_iterate;
       return st;
