@@ -8,6 +8,13 @@
 //   Lagrange basis), midpoint, trapezoidal, galerkin m = 2..4; scalars double and
 //   cpp_bin_float_50.
 // Counter newton_its: average Newton iterations per step.
+//
+//   workprecision/<system>/<scalar>/<scheme>/<steps>: one whole run of geomint-workprecision's
+//   geomint_method at its best point on the pendulum (double, T = 1000, 715 steps: final error
+//   6e-11; cpp_bin_float_50, T = 100, 142 steps: 1.4e-30; tools/workprecision): the
+//   integrator constructed, then the steps from the initial data, compensated summation on.
+//   Counters: sweeps (iterations) per step and the run's CPU time per step; `construct` alone: the
+//   integrator's construction (the scheme's coefficients), which the run includes.
 // Filter with --benchmark_filter, e.g. --benchmark_filter='double/lpf-m[468]-gauss'.
 #include <string>
 #include <utility>
@@ -16,6 +23,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "geomint/integrator.hpp"
+#include "geomint/schemes/lpf_fixed_point.hpp"
 #include "geomint/mechanics/systems.hpp"
 
 namespace {
@@ -55,6 +63,50 @@ void BM_step(benchmark::State& state) {
   state.counters["newton_its"] = steps ? double(iterations) / double(steps) : 0.0;
 }
 
+/// A whole run as geomint-workprecision's geomint_method times it (tools/workprecision/methods.hpp).
+template <class Scheme, class Sys, class T>
+void BM_run(benchmark::State& state, long steps, long t_end, bool stop_on_rate) {
+  const auto [q0, v0] = initial<Sys, T>();
+  long iterations = 0, taken = 0;
+  for (auto _ : state) {
+    geomint::integrator<Scheme, Sys, T> I(Sys{}, T(T(t_end) / T(steps)));
+    I.set_compensated_summation(true);
+    if (stop_on_rate) I.options().stop_on_rate = true;
+    auto s = I.initial_state(q0, v0);
+    for (long k = 0; k < steps; ++k) {
+      const geomint::step_status st = I.try_step(s);
+      if (!st) {
+        state.SkipWithError(st.message().c_str());
+        return;
+      }
+      iterations += st.iterations;
+      ++taken;
+    }
+    benchmark::DoNotOptimize(s.q.data());
+  }
+  state.counters["sweeps_per_step"] = taken ? double(iterations) / double(taken) : 0.0;
+  // CPU seconds of the whole run (construction included) per step, printed with an SI prefix.
+  state.counters["time_per_step"] =
+      benchmark::Counter(double(steps), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+/// The integrator's construction alone.
+template <class Scheme, class Sys, class T>
+void BM_construct(benchmark::State& state) {
+  for (auto _ : state) {
+    geomint::integrator<Scheme, Sys, T> I(Sys{}, T(1) / T(10));
+    benchmark::DoNotOptimize(&I);
+  }
+}
+
+template <class Scheme, class Sys, class T>
+void add_run(const std::string& scalar, const std::string& scheme, long steps, long t_end, bool stop_on_rate) {
+  const std::string name = "workprecision/" + std::string(Sys::name) + "/" + scalar + "/" + scheme + "/";
+  benchmark::RegisterBenchmark((name + std::to_string(steps)).c_str(), &BM_run<Scheme, Sys, T>, steps, t_end, stop_on_rate)
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark((name + "construct").c_str(), &BM_construct<Scheme, Sys, T>)->Unit(benchmark::kMicrosecond);
+}
+
 template <class Scheme, class Sys, class T>
 void add(const std::string& scalar, const std::string& scheme) {
   const std::string name = std::string(Sys::name) + "/" + scalar + "/" + scheme;
@@ -90,6 +142,9 @@ int main(int argc, char** argv) {
   add_all<geomint::systems::kepler, double>("double");
   add_all<geomint::systems::pendulum, mp50>("cpp_bin_float_50");
   add_all<geomint::systems::kepler, mp50>("cpp_bin_float_50");
+  using geomint::lpf_fixed_point;
+  add_run<lpf_fixed_point<10>, geomint::systems::pendulum, double>("double", "lpf-fixed-point-m10-stop-on-rate", 715, 1000, true);
+  add_run<lpf_fixed_point<16>, geomint::systems::pendulum, mp50>("cpp_bin_float_50", "lpf-fixed-point-m16", 142, 100, false);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
