@@ -51,6 +51,16 @@ constexpr rkn<rational, static_cast<int>(S)> kick_drift_rkn(const rational (&kic
   return t;
 }
 
+/// The formula with the same c and a and other weights (the other formula of an embedded pair).
+template <int S>
+constexpr rkn<rational, S> with_weights(rkn<rational, S> t, const rational (&bbar)[S], const rational (&b)[S]) {
+  for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) {
+    t.bbar[i] = bbar[i];
+    t.b[i] = b[i];
+  }
+  return t;
+}
+
 /// 2^(1/3), the generator of the compositions' field (r^3 = 2 has one real root).
 inline field_element cube_root_of_two() { return field_element::generator(algebraic_field::make({-2, 0, 0, 1})); }
 inline field_element exact(long n, long d = 1) { return field_element(exact_rational(n, d)); }
@@ -100,14 +110,8 @@ struct demp_rkn43_embedded {
   static constexpr std::string_view name() { return "demp-rkn43-embedded"; }
   static constexpr auto tableau() {
     using R = rational;
-    auto t = demp_rkn43::tableau();
-    const R bbar[4] = {R(-7, 150), R(67, 150), R(3, 20), R(-1, 20)};
-    const R b[4] = {R(13, 21), R(-20, 27), R(275, 189), R(-1, 3)};
-    for (std::size_t i = 0; i < 4; ++i) {
-      t.bbar[i] = bbar[i];
-      t.b[i] = b[i];
-    }
-    return t;
+    return detail::with_weights<4>(demp_rkn43::tableau(), {R(-7, 150), R(67, 150), R(3, 20), R(-1, 20)},
+                                   {R(13, 21), R(-20, 27), R(275, 189), R(-1, 3)});
   }
 };
 
@@ -132,14 +136,9 @@ struct demp_rkn64_embedded {
   static constexpr std::string_view name() { return "demp-rkn64-embedded"; }
   static constexpr auto tableau() {
     using R = rational;
-    auto t = demp_rkn64::tableau();
-    const R bbar[6] = {R(1349, 157500), R(7873, 50000), R(192199, 900000), R(521683, 2100000), R(-16, 125), 0};
-    const R b[6] = {R(1349, 157500), R(7873, 45000), R(27457, 90000), R(521683, 630000), R(-2, 5), R(1, 12)};
-    for (std::size_t i = 0; i < 6; ++i) {
-      t.bbar[i] = bbar[i];
-      t.b[i] = b[i];
-    }
-    return t;
+    return detail::with_weights<6>(demp_rkn64::tableau(),
+                                   {R(1349, 157500), R(7873, 50000), R(192199, 900000), R(521683, 2100000), R(-16, 125), 0},
+                                   {R(1349, 157500), R(7873, 45000), R(27457, 90000), R(521683, 630000), R(-2, 5), R(1, 12)});
   }
 };
 
