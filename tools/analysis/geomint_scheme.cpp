@@ -11,6 +11,9 @@
 //       file, exactly over its coefficients (include/geomint/analysis/bseries/method_analysis.hpp)
 //   geomint-scheme --print-tableau [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all]
 //       the exact tableau (node polynomial and monomial-basis matrices, or rationals)
+//   geomint-scheme --analyse|--print-tableau --scheme NAME [--csv]; geomint-scheme --list-methods
+//       a method of the catalogue (include/geomint/methods/catalogue.hpp): analysed as a tableau
+//       file is, or printed as a tableau file (docs/guide/tableau_files.md); the list of names
 //
 // --m applies to lpf and galerkin, --nodes to lpf only: given to another scheme they are usage
 // errors (exit 2), never ignored; every m of a range is printed.
@@ -22,6 +25,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,6 +36,7 @@
 #include "geomint/analysis/order_conditions.hpp"
 #include "geomint/analysis/rkn_tableau.hpp"
 #include "geomint/analysis/scheme_structure.hpp"
+#include "geomint/methods/catalogue.hpp"
 #include "geomint/methods/tableau_file.hpp"
 
 namespace {
@@ -43,6 +48,8 @@ const char* usage_text =
     "usage: geomint-scheme [--analyse|--print-tableau] [--scheme lpf|midpoint|trapezoidal|galerkin]\n"
     "                      [--nodes F[,F...]|all] [--m M|A..B|all] [--csv]\n"
     "       geomint-scheme --analyse --tableau FILE [--csv]\n"
+    "       geomint-scheme --analyse|--print-tableau --scheme NAME [--csv]\n"
+    "       geomint-scheme --list-methods\n"
     "  Exact analysis of a scheme from its Runge-Kutta-Nystrom tableau (natural systems).\n"
     "  default     the two-step form x^{k+1} = R(tau) x^k - x^{k-1} for L = xdot^2/2 - x^2/2:\n"
     "              R = P(tau^2)/Q(tau^2) in lowest terms and R - 2 cos tau = c tau^(p+2) + ...\n"
@@ -65,7 +72,12 @@ const char* usage_text =
     "  --print-tableau  the exact tableau of a built-in scheme: node polynomial N and the\n"
     "              matrices on Q[x]/(N) in the monomial basis (or rationals), with 30-digit\n"
     "              decimals of c, a, bbar, b\n"
-    "  --scheme S  lpf (default), midpoint, trapezoidal or galerkin (Gauss quadrature, m = 1..8)\n"
+    "  --scheme S  lpf (default), midpoint, trapezoidal or galerkin (Gauss quadrature, m = 1..8),\n"
+    "              or NAME, a method of the catalogue from the literature (gauss-3, radau-iia-3,\n"
+    "              lobatto-iiia-iiib-4, forest-ruth, demp-rkn64, ...): with --analyse the same\n"
+    "              analysis and CSV as --tableau FILE; with --print-tableau its exact tableau as a\n"
+    "              tableau file (--m and --nodes do not apply)\n"
+    "  --list-methods  the catalogue: name, kind, stages, published order, title, source (CSV)\n"
     "  --nodes F   equispaced (default), gauss-interior, lobatto, chebyshev (also gauss_interior,\n"
     "              gauss-lobatto, chebyshev-lobatto, ...), a comma list, or all (lpf only)\n"
     "  --m M       degree 2..8 for lpf, 1..8 for galerkin; A..B or all (default 2; not for\n"
@@ -159,6 +171,8 @@ std::string stability_kind_text(const linear_stability_result& r) {
 struct options {
   std::string mode = "two-step";
   std::string tableau_file;  ///< --tableau FILE
+  std::string catalogue_name;  ///< --scheme NAME of the catalogue
+  std::string method_label;    ///< "tableau FILE" or "catalogue method NAME" (text output)
   std::string scheme = "lpf";
   std::vector<std::string> families = {"equispaced"};
   int m_first = 2, m_last = 2;
@@ -215,7 +229,7 @@ int analyse_file(const options& o, const methods::tableau_data<methods::field_el
     std::cout << analyse_header << name << ",-,-," << t.stages << "," << order << "," << (r.symplectic ? "yes" : "no")
               << ",-,-,-,-," << kind << ",-,-,-\n";
   } else {
-    std::cout << "tableau " << o.tableau_file << ": " << name << " (" << kind << ", " << t.stages << " stages)\n"
+    std::cout << o.method_label << ": " << name << " (" << kind << ", " << t.stages << " stages)\n"
               << "  order " << order << " (" << (r.colours == 1 ? "B-series, rooted trees" : "P-series, bi-coloured trees")
               << (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom ? " of the Nystrom form" : "")
               << " up to order " << r.tree_order << ")\n"
@@ -315,6 +329,76 @@ int print_tableau(const options& o) {
   return cli::finish_stdout("geomint-scheme");
 }
 
+/// --list-methods: the catalogue as CSV.
+int list_methods() {
+  std::cout << "name,kind,stages,order,title,source\n";
+  for (const methods::catalogue_entry& e : methods::catalogue())
+    std::cout << e.name << "," << methods::to_string(e.kind) << "," << e.stages << "," << e.order << ",\"" << e.title << "\",\""
+              << e.source << "\"\n";
+  return cli::finish_stdout("geomint-scheme");
+}
+
+/// A polynomial in r with rational coefficients (constant first) in the tableau file's syntax,
+/// in ascending powers (or descending: `highest_first`).
+std::string polynomial_text(const std::vector<methods::exact_rational>& c, bool highest_first = false) {
+  std::string out;
+  for (std::size_t n = 0; n < c.size(); ++n) {
+    const std::size_t k = highest_first ? c.size() - 1 - n : n;
+    if (c[k] == 0) continue;
+    std::string coefficient = c[k].str();
+    if (k > 0 && (c[k] == 1 || c[k] == -1)) coefficient = c[k] == 1 ? "" : "-";
+    std::string term = coefficient;
+    if (k > 0) term += (coefficient.empty() || coefficient == "-" ? "" : "*") + std::string("r") + (k > 1 ? "^" + std::to_string(k) : "");
+    out += (out.empty() || term[0] == '-') ? term : "+" + term;
+  }
+  return out.empty() ? "0" : out;
+}
+std::string entry_text(const methods::field_element& x) { return polynomial_text(x.coefficients()); }
+
+/// --print-tableau --scheme NAME: the catalogue method as a tableau file (read back by
+/// --analyse --tableau and geomint-run --tableau).
+int print_catalogue_tableau(const methods::catalogue_entry& e) {
+  const methods::tableau_data<methods::field_element> t = e.tableau();
+  std::shared_ptr<const methods::algebraic_field> field;
+  auto note = [&](const std::vector<methods::field_element>& v) {
+    for (const auto& x : v)
+      if (x.field()) field = x.field();
+  };
+  for (const auto* v : {&t.c, &t.b, &t.bbar, &t.bhat}) note(*v);
+  for (const auto* m : {&t.a, &t.ap, &t.ahat})
+    for (const auto& row : *m) note(row);
+  std::cout << "# " << e.title << ": " << e.source << "\n"
+            << "kind " << methods::to_string(t.kind) << "\nstages " << t.stages << "\nname " << t.name << "\n";
+  if (field) {
+    // r is the largest real root unless the reader must be told which ("near", the midpoint of
+    // the root's isolating interval).
+    std::cout << "field " << polynomial_text(field->polynomial(), true);
+    const auto largest = methods::algebraic_field::make(field->polynomial());
+    if (!(largest->lower() == field->lower() && largest->upper() == field->upper()))
+      std::cout << " near " << methods::exact_rational((field->lower() + field->upper()) / 2).str();
+    std::cout << "\n";
+  }
+  auto line = [](const char* key, const std::vector<methods::field_element>& v) {
+    if (v.empty()) return;
+    std::cout << key;
+    for (const auto& x : v) std::cout << " " << entry_text(x);
+    std::cout << "\n";
+  };
+  auto square = [&](const char* key, const std::vector<std::vector<methods::field_element>>& m) {
+    std::vector<methods::field_element> flat;
+    for (const auto& row : m) flat.insert(flat.end(), row.begin(), row.end());
+    line(key, flat);
+  };
+  line("c", t.c);
+  square("a", t.a);
+  square("ap", t.ap);
+  square("ahat", t.ahat);
+  line("bbar", t.bbar);
+  line("b", t.b);
+  line("bhat", t.bhat);
+  return cli::finish_stdout("geomint-scheme");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -323,6 +407,7 @@ int main(int argc, char** argv) {
   cl.toggle("--analyse", [&] { o.mode = "analyse"; });
   cl.toggle("--analyze", [&] { o.mode = "analyse"; });
   cl.toggle("--print-tableau", [&] { o.mode = "tableau"; });
+  cl.toggle("--list-methods", [&] { o.mode = "list"; });
   cl.value("--tableau", [&](const std::string& v) { o.tableau_file = v; });
   cl.toggle("--csv", [&] { o.csv = true; });
   cl.toggle("--all", [&] {
@@ -332,7 +417,16 @@ int main(int argc, char** argv) {
   bool scheme_given = false;
   cl.value("--scheme", [&](const std::string& v) {
     scheme_given = true;
-    o.scheme = cli::parse_choice("--scheme", v, {"lpf", "midpoint", "trapezoidal", "galerkin"});
+    if (methods::find_in_catalogue(v)) {
+      o.catalogue_name = v;
+      return;
+    }
+    const std::vector<std::string> built_in = {"lpf", "midpoint", "trapezoidal", "galerkin"};
+    for (const std::string& b : built_in)
+      if (b == v) o.scheme = v;
+    if (o.scheme != v)
+      throw cli::usage_error("--scheme must be one of lpf, midpoint, trapezoidal, galerkin or a method of the catalogue "
+                             "(geomint-scheme --list-methods); got " + cli::in_quotes(v));
   });
   cl.value("--nodes", [&](const std::string& v) {
     o.families = cli::parse_node_family_list("--nodes", v);
@@ -344,7 +438,29 @@ int main(int argc, char** argv) {
     if (std::string(argv[i]) == "--tableau" && (i + 1 == argc || std::string(argv[i + 1]).rfind("--", 0) == 0))
       return cl.fail("--tableau needs a value: a tableau FILE (to print a built-in scheme's tableau use --print-tableau)");
   if (const auto done = cl.parse(argc, argv)) return *done;
+  if (o.mode == "list") {
+    if (scheme_given || o.m_given || o.nodes_given || !o.tableau_file.empty())
+      return cl.fail("--list-methods takes no other option");
+    return list_methods();
+  }
+  if (!o.catalogue_name.empty()) {
+    if (o.m_given || o.nodes_given)
+      return cl.fail("--m and --nodes do not apply to --scheme " + o.catalogue_name + " (a method of the catalogue)");
+    if (!o.tableau_file.empty()) return cl.fail("--scheme and --tableau FILE exclude each other");
+    if (o.mode != "analyse" && o.mode != "tableau")
+      return cl.fail("--scheme " + o.catalogue_name + " (a method of the catalogue) is used with --analyse or --print-tableau");
+    const methods::catalogue_entry& e = *methods::find_in_catalogue(o.catalogue_name);
+    o.method_label = "catalogue method " + e.name + " (" + e.title + "; " + e.source + ")";
+    try {
+      if (o.mode == "tableau") return print_catalogue_tableau(e);
+      return analyse_file(o, e.tableau());
+    } catch (const std::exception& ex) {
+      std::cerr << "geomint-scheme: " << o.catalogue_name << ": " << ex.what() << "\n";
+      return cli::finish_stdout("geomint-scheme", cli::exit_run_failure);
+    }
+  }
   if (!o.tableau_file.empty()) {
+    o.method_label = "tableau " + o.tableau_file;
     if (o.mode != "analyse") return cl.fail("--tableau FILE is analysed with --analyse (--print-tableau prints a built-in scheme)");
     if (o.m_given || o.nodes_given || scheme_given)
       return cl.fail("--scheme, --nodes and --m choose a built-in scheme: they exclude --tableau FILE");

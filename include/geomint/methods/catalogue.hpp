@@ -1,0 +1,331 @@
+#pragma once
+/// Methods from the literature with exact coefficients, each a scheme of the one integrator
+/// (integrator<tableau_method<M>, Sys, T>, methods/tableau_method.hpp) and, by name, an entry of
+/// `catalogue()` (geomint-scheme --analyse --scheme NAME). Full references: docs/references.md.
+///
+/// - Explicit methods over geomint::rational (constexpr, structural): Stormer-Verlet, Ruth's
+///   order-3 method, the Dormand-El-Mikkawy-Prince RKN pairs 4(3) and 6(4) (each formula of a
+///   pair an entry), Nystrom's classical order-4 method (nystrom kind).
+/// - Compositions over Q(2^(1/3)) (methods/composition.hpp): Forest-Ruth, Yoshida's triple
+///   jump, Suzuki's fractal order-4 method.
+/// - The collocation-type families (methods/collocation_families.hpp): Gauss, Radau IIA, Radau
+///   IA, Lobatto IIIA, IIIB, IIIC and the IIIA-IIIB pair.
+///
+/// Each entry carries its published order, symplecticity and symmetry with the source that states
+/// them; tests/methods/test_catalogue.cpp checks them against the exact analysis.
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geomint/core/rational.hpp"
+#include "geomint/methods/collocation_families.hpp"
+#include "geomint/methods/composition.hpp"
+#include "geomint/methods/nystrom_form.hpp"
+#include "geomint/methods/number_field.hpp"
+#include "geomint/methods/tableau.hpp"
+
+namespace geomint::methods {
+
+namespace detail {
+/// The explicit RKN method of a splitting kick b_1, drift d_1, ..., kick b_s, drift d_s
+/// (sum d = 1, as H = T(p) + V(q) with T quadratic): the i-th force is evaluated at
+/// c_i = d_1 + ... + d_{i-1}, and the velocity of kick j drifts for (c_i - c_j) h before it,
+/// so a_ij = b_j (c_i - c_j) (j < i) and bbar_j = b_j (1 - c_j) (Hairer, Lubich & Wanner 2006,
+/// section V.3.2).
+template <std::size_t S>
+constexpr rkn<rational, static_cast<int>(S)> kick_drift_rkn(const rational (&kick)[S], const rational (&drift)[S]) {
+  rkn<rational, static_cast<int>(S)> t{};
+  rational position(0);
+  for (std::size_t i = 0; i < S; ++i) {
+    t.c[i] = position;
+    position = position + drift[i];
+  }
+  for (std::size_t i = 0; i < S; ++i) {
+    t.b[i] = kick[i];
+    t.bbar[i] = kick[i] * (rational(1) - t.c[i]);
+    for (std::size_t j = 0; j < i; ++j) t.a[i][j] = kick[j] * (t.c[i] - t.c[j]);
+  }
+  return t;
+}
+
+/// The formula with the same c and a and other weights (the other formula of an embedded pair).
+template <int S>
+constexpr rkn<rational, S> with_weights(rkn<rational, S> t, const rational (&bbar)[S], const rational (&b)[S]) {
+  for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) {
+    t.bbar[i] = bbar[i];
+    t.b[i] = b[i];
+  }
+  return t;
+}
+
+/// 2^(1/3), the generator of the compositions' field (r^3 = 2 has one real root).
+inline field_element cube_root_of_two() { return field_element::generator(algebraic_field::make({-2, 0, 0, 1})); }
+inline field_element exact(long n, long d = 1) { return field_element(exact_rational(n, d)); }
+
+/// Velocity Stormer-Verlet (kick-drift-kick) and position Stormer-Verlet (drift-kick-drift) as
+/// RKN tableaux over field_element, the bases of the compositions.
+inline rkn<field_element, 2> velocity_verlet() {
+  return make_rkn<field_element>({exact(0), exact(1)}, {{exact(0), exact(0)}, {exact(1, 2), exact(0)}}, {exact(1, 2), exact(0)},
+                                 {exact(1, 2), exact(1, 2)});
+}
+inline rkn<field_element, 1> position_verlet() { return make_rkn<field_element>({exact(1, 2)}, {{exact(0)}}, {exact(1, 2)}, {exact(1)}); }
+}  // namespace detail
+
+/// Stormer-Verlet (velocity form): q1 = q + h v + h^2/2 f(q), v1 = v + h/2 (f(q) + f(q1));
+/// order 2, symplectic, symmetric (Hairer, Lubich & Wanner 2006, sections I.1.4, VI.3 and V.1).
+/// On y'' = -y its step matrix has trace 2 - h^2 and determinant 1: periodic for 0 < h < 2.
+struct stormer_verlet {
+  static constexpr std::string_view name() { return "stormer-verlet"; }
+  static constexpr auto tableau() {
+    return make_rkn<rational>({0, 1}, {{0, 0}, {rational(1, 2), 0}}, {rational(1, 2), 0}, {rational(1, 2), rational(1, 2)});
+  }
+};
+
+/// Ruth's order-3 method: kicks (7/24, 3/4, -1/24) and drifts (2/3, -2/3, 1), the kick first
+/// (Ruth 1983, IEEE Trans. Nucl. Sci. 30, 2669-2671; as quoted by Forest & Ruth 1990). Order 3,
+/// symplectic, not symmetric.
+struct ruth3 {
+  static constexpr std::string_view name() { return "ruth-3"; }
+  static constexpr auto tableau() {
+    return detail::kick_drift_rkn<3>({rational(7, 24), rational(3, 4), rational(-1, 24)}, {rational(2, 3), rational(-2, 3), rational(1)});
+  }
+};
+
+/// Dormand, El-Mikkawy & Prince (1987), RKN4(3)4FM: the explicit FSAL pair of orders 4 and 3
+/// with c = (0, 1/4, 7/10, 1) (IMA J. Numer. Anal. 7, 235-250). `embedded`: the
+/// order-3 formula of the pair (same c and a).
+struct demp_rkn43 {
+  static constexpr std::string_view name() { return "demp-rkn43"; }
+  static constexpr auto tableau() {
+    using R = rational;
+    return make_rkn<R>({0, R(1, 4), R(7, 10), 1},
+                       {{0, 0, 0, 0}, {R(1, 32), 0, 0, 0}, {R(7, 1000), R(119, 500), 0, 0}, {R(1, 14), R(8, 27), R(25, 189), 0}},
+                       {R(1, 14), R(8, 27), R(25, 189), 0}, {R(1, 14), R(32, 81), R(250, 567), R(5, 54)});
+  }
+};
+struct demp_rkn43_embedded {
+  static constexpr std::string_view name() { return "demp-rkn43-embedded"; }
+  static constexpr auto tableau() {
+    using R = rational;
+    return detail::with_weights<4>(demp_rkn43::tableau(), {R(-7, 150), R(67, 150), R(3, 20), R(-1, 20)},
+                                   {R(13, 21), R(-20, 27), R(275, 189), R(-1, 3)});
+  }
+};
+
+/// Dormand, El-Mikkawy & Prince (1987), RKN6(4)6FM: the explicit FSAL pair of orders 6 and 4
+/// with c = (0, 1/10, 3/10, 7/10, 17/25, 1) (IMA J. Numer. Anal. 7, 235-250).
+struct demp_rkn64 {
+  static constexpr std::string_view name() { return "demp-rkn64"; }
+  static constexpr auto tableau() {
+    using R = rational;
+    return make_rkn<R>({0, R(1, 10), R(3, 10), R(7, 10), R(17, 25), 1},
+                       {{0, 0, 0, 0, 0, 0},
+                        {R(1, 200), 0, 0, 0, 0, 0},
+                        {R(-1, 2200), R(1, 22), 0, 0, 0, 0},
+                        {R(637, 6600), R(-7, 110), R(7, 33), 0, 0, 0},
+                        {R(225437, 1968750), R(-30073, 281250), R(65569, 281250), R(-9367, 984375), 0, 0},
+                        {R(151, 2142), R(5, 116), R(385, 1368), R(55, 168), R(-6250, 28101), 0}},
+                       {R(151, 2142), R(5, 116), R(385, 1368), R(55, 168), R(-6250, 28101), 0},
+                       {R(151, 2142), R(25, 522), R(275, 684), R(275, 252), R(-78125, 112404), R(1, 12)});
+  }
+};
+struct demp_rkn64_embedded {
+  static constexpr std::string_view name() { return "demp-rkn64-embedded"; }
+  static constexpr auto tableau() {
+    using R = rational;
+    return detail::with_weights<6>(demp_rkn64::tableau(),
+                                   {R(1349, 157500), R(7873, 50000), R(192199, 900000), R(521683, 2100000), R(-16, 125), 0},
+                                   {R(1349, 157500), R(7873, 45000), R(27457, 90000), R(521683, 630000), R(-2, 5), R(1, 12)});
+  }
+};
+
+/// Nystrom's classical method of order 4 for q'' = F(q, q') (Nystrom 1925; Hairer, Norsett &
+/// Wanner I, section II.14): ap is the classical RK4 matrix, a = (1/8; 1/8, 0;
+/// 0, 0, 1/2), bbar = (1, 1, 1, 0)/6, b = (1, 2, 2, 1)/6.
+struct nystrom4 {
+  static constexpr std::string_view name() { return "nystrom-4"; }
+  static constexpr auto tableau() {
+    using R = rational;
+    return make_nystrom<R>({0, R(1, 2), R(1, 2), 1}, {{0, 0, 0, 0}, {R(1, 8), 0, 0, 0}, {R(1, 8), 0, 0, 0}, {0, 0, R(1, 2), 0}},
+                           {{0, 0, 0, 0}, {R(1, 2), 0, 0, 0}, {0, R(1, 2), 0, 0}, {0, 0, 1, 0}}, {R(1, 6), R(1, 6), R(1, 6), 0},
+                           {R(1, 6), R(1, 3), R(1, 3), R(1, 6)});
+  }
+};
+
+/// Forest & Ruth (1990): position Stormer-Verlet with the steps theta h,
+/// (1 - 2 theta) h, theta h, theta = 1/(2 - 2^(1/3)) (drift theta h/2, kick theta h, drift
+/// (1 - theta) h/2, ...). Order 4, symplectic, symmetric.
+struct forest_ruth {
+  static constexpr std::string_view name() { return "forest-ruth"; }
+  static auto tableau() {
+    const field_element r = detail::cube_root_of_two(), theta = detail::exact(1) / (detail::exact(2) - r);
+    return composition<rkn<field_element, 1>, 3>{detail::position_verlet(), {theta, detail::exact(1) - theta - theta, theta}};
+  }
+};
+
+/// Yoshida's triple jump (Yoshida 1990, section 4): velocity Stormer-Verlet with the
+/// steps w1 h, w0 h, w1 h, w1 = 1/(2 - 2^(1/3)), w0 = -2^(1/3)/(2 - 2^(1/3)). Order 4,
+/// symplectic, symmetric.
+struct yoshida_triple_jump {
+  static constexpr std::string_view name() { return "yoshida-triple-jump"; }
+  static auto tableau() {
+    const field_element r = detail::cube_root_of_two(), w1 = detail::exact(1) / (detail::exact(2) - r);
+    return composition<rkn<field_element, 2>, 3>{detail::velocity_verlet(), {w1, -r * w1, w1}};
+  }
+};
+
+/// Suzuki's fractal order-4 method (Suzuki 1990): velocity
+/// Stormer-Verlet with the steps p h, p h, (1 - 4p) h, p h, p h, p = 1/(4 - 4^(1/3)),
+/// 4^(1/3) = (2^(1/3))^2. Order 4, symplectic, symmetric.
+struct suzuki4 {
+  static constexpr std::string_view name() { return "suzuki-4"; }
+  static auto tableau() {
+    const field_element r = detail::cube_root_of_two(), p = detail::exact(1) / (detail::exact(4) - r * r);
+    const field_element middle = detail::exact(1) - detail::exact(4) * p;
+    return composition<rkn<field_element, 2>, 5>{detail::velocity_verlet(), {p, p, middle, p, p}};
+  }
+};
+
+/// One method of the catalogue by name, with the properties its source publishes.
+struct catalogue_entry {
+  std::string name;     ///< the name geomint-scheme --scheme takes
+  std::string title;    ///< e.g. "Gauss, s = 3"
+  std::string source;   ///< where the coefficients and the published properties are printed
+  method_kind kind = method_kind::rkn;
+  int stages = 0;
+  int order = 0;        ///< published order
+  bool symplectic = false;
+  bool symmetric = false;
+  std::function<tableau_data<field_element>()> tableau;  ///< exact, compositions as their rkn tableau
+};
+
+namespace detail {
+inline field_element to_field(const rational& x) { return field_element(exact_rational(x.num, x.den)); }
+inline const field_element& to_field(const field_element& x) { return x; }
+
+/// A typed tableau (or composition, by its Nystrom form) as run-time data over field_element.
+template <class Tableau>
+tableau_data<field_element> field_data_of(const Tableau& t) {
+  const nystrom_form<typename Tableau::coefficient> f = nystrom_form_of(t);
+  tableau_data<field_element> d;
+  d.kind = f.has_velocity_stages ? method_kind::nystrom : method_kind::rkn;
+  d.stages = f.stages;
+  auto vec = [](const auto& x) {
+    std::vector<field_element> out;
+    for (const auto& v : x) out.push_back(to_field(v));
+    return out;
+  };
+  d.c = vec(f.c);
+  d.bbar = vec(f.bbar);
+  d.b = vec(f.b);
+  for (const auto& row : f.a) d.a.push_back(vec(row));
+  if (f.has_velocity_stages)
+    for (const auto& row : f.ap) d.ap.push_back(vec(row));
+  return d;
+}
+
+template <class Method>
+catalogue_entry explicit_entry(std::string title, std::string source, int order, bool symplectic, bool symmetric) {
+  catalogue_entry e;
+  e.name = std::string(Method::name());
+  e.title = std::move(title);
+  e.source = std::move(source);
+  e.order = order;
+  e.symplectic = symplectic;
+  e.symmetric = symmetric;
+  e.tableau = [] {
+    tableau_data<field_element> d = field_data_of(Method::tableau());
+    d.name = std::string(Method::name());
+    return d;
+  };
+  const tableau_data<field_element> d = e.tableau();
+  e.kind = d.kind;
+  e.stages = d.stages;
+  return e;
+}
+
+inline std::vector<catalogue_entry> make_catalogue() {
+  std::vector<catalogue_entry> out;
+  struct family {
+    collocation_family id;
+    const char* name;
+    const char* title;
+    int first, last;
+    int order_offset;  // order = 2s + offset
+    bool symplectic, symmetric;
+    const char* source;
+  };
+  const family families[] = {
+      {collocation_family::gauss, "gauss", "Gauss", 2, 3, 0, true, true,
+       "Butcher 1964; Hairer & Wanner II, section IV.5; Hairer, Lubich & Wanner, sections V.2 and VI.4"},
+      {collocation_family::radau_iia, "radau-iia", "Radau IIA", 2, 3, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
+      {collocation_family::radau_ia, "radau-ia", "Radau IA", 2, 3, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
+      {collocation_family::lobatto_iiia, "lobatto-iiia", "Lobatto IIIA", 2, 5, -2, false, true,
+       "Ehle 1969; Hairer & Wanner II, section IV.5; Hairer, Lubich & Wanner, sections II.1.4 and V.2"},
+      {collocation_family::lobatto_iiib, "lobatto-iiib", "Lobatto IIIB", 2, 5, -2, false, true,
+       "Ehle 1969; Hairer & Wanner II, section IV.5; Hairer, Lubich & Wanner, sections II.1.4 and V.2"},
+      {collocation_family::lobatto_iiic, "lobatto-iiic", "Lobatto IIIC", 2, 5, -2, false, false,
+       "Chipman 1971; Hairer & Wanner II, section IV.5"},
+      {collocation_family::lobatto_iiia_iiib, "lobatto-iiia-iiib", "Lobatto IIIA-IIIB pair", 2, 5, -2, true, true,
+       "Jay 1996; Hairer, Lubich & Wanner, sections II.2.2, V.2 and VI.4"},
+  };
+  for (const family& f : families)
+    for (int s = f.first; s <= f.last; ++s) {
+      catalogue_entry e;
+      e.name = std::string(f.name) + "-" + std::to_string(s);
+      e.title = std::string(f.title) + ", s = " + std::to_string(s);
+      e.source = f.source;
+      e.kind = f.id == collocation_family::lobatto_iiia_iiib ? method_kind::prk : method_kind::rk;
+      e.stages = s;
+      e.order = 2 * s + f.order_offset;
+      e.symplectic = f.symplectic;
+      e.symmetric = f.symmetric;
+      if (f.id == collocation_family::lobatto_iiib && s == 2) {
+        // Its tableau violates b_i a_ij + b_j a_ji = b_i b_j, but the method is reducible: both
+        // stages solve K = f(y + h K / 2), so y1 = y + h K is the implicit midpoint rule, which is
+        // symplectic (Hairer, Lubich & Wanner, section VI.3); the B-series analysis says so.
+        e.symplectic = true;
+        e.source += "; reducible to the implicit midpoint rule (symplectic)";
+      }
+      const std::string name = e.name;
+      e.tableau = [id = f.id, s, name] {
+        tableau_data<field_element> d = collocation_family_tableau(id, s);
+        d.name = name;
+        return d;
+      };
+      out.push_back(std::move(e));
+    }
+  out.push_back(explicit_entry<stormer_verlet>("Stormer-Verlet", "Hairer, Lubich & Wanner, sections I.1.4, V.1 and VI.3", 2, true, true));
+  out.push_back(explicit_entry<ruth3>("Ruth's order-3 method", "Ruth 1983; Forest & Ruth 1990", 3, true, false));
+  out.push_back(explicit_entry<forest_ruth>("Forest-Ruth", "Forest & Ruth 1990", 4, true, true));
+  out.push_back(explicit_entry<yoshida_triple_jump>("Yoshida's triple jump", "Yoshida 1990", 4, true, true));
+  out.push_back(explicit_entry<suzuki4>("Suzuki's fractal order 4", "Suzuki 1990", 4, true, true));
+  out.push_back(explicit_entry<demp_rkn43>("DEMP RKN4(3)4FM, order-4 formula", "Dormand, El-Mikkawy & Prince 1987", 4, false, false));
+  out.push_back(
+      explicit_entry<demp_rkn43_embedded>("DEMP RKN4(3)4FM, order-3 formula", "Dormand, El-Mikkawy & Prince 1987", 3, false, false));
+  out.push_back(explicit_entry<demp_rkn64>("DEMP RKN6(4)6FM, order-6 formula", "Dormand, El-Mikkawy & Prince 1987", 6, false, false));
+  out.push_back(
+      explicit_entry<demp_rkn64_embedded>("DEMP RKN6(4)6FM, order-4 formula", "Dormand, El-Mikkawy & Prince 1987", 4, false, false));
+  out.push_back(explicit_entry<nystrom4>("Nystrom's classical order 4", "Nystrom 1925; Hairer, Norsett & Wanner I, section II.14",
+                                         4, false, false));
+  return out;
+}
+}  // namespace detail
+
+/// Every method of the catalogue (built once).
+inline const std::vector<catalogue_entry>& catalogue() {
+  static const std::vector<catalogue_entry> entries = detail::make_catalogue();
+  return entries;
+}
+
+/// The entry called `name`, or nullptr.
+inline const catalogue_entry* find_in_catalogue(std::string_view name) {
+  for (const catalogue_entry& e : catalogue())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+}  // namespace geomint::methods

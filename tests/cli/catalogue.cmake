@@ -1,0 +1,42 @@
+# geomint-scheme --analyse|--print-tableau --scheme NAME, --list-methods: the catalogue of methods
+# from the literature (include/geomint/methods/catalogue.hpp). Included from CMakeLists.txt.
+set(_header "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,stability_interval,phase_lag_order,kind,stage_order,stability,dissipation_order")
+# Published orders and symplecticity: Gauss s = 3 order 6, symplectic (Butcher 1964; Hairer,
+# Lubich & Wanner 2006, section VI.4); Radau IIA s = 3 order 5 (Ehle 1969; Hairer & Wanner II,
+# section IV.5); Lobatto IIIC s = 3 order 4, not symplectic (Chipman 1971; ibid.); RKN6(4)6FM
+# order 6 (Dormand, El-Mikkawy & Prince 1987); Suzuki's method order 4, symplectic (Suzuki 1990;
+# 5 Stormer-Verlet steps of 2 stages, 10 stages as one rkn tableau).
+foreach(_case "gauss-3,-,-,3,6,yes,-,-,-,-,rk" "radau-iia-3,-,-,3,5,no,-,-,-,-,rk" "lobatto-iiic-3,-,-,3,4,no,-,-,-,-,rk"
+              "demp-rkn64,-,-,6,6,no,-,-,-,-,rkn" "suzuki-4,-,-,10,4,yes,-,-,-,-,rkn")
+  string(REGEX MATCH "^[^,]+" _name "${_case}")
+  geomint_cli_test(geomint_cli_scheme_catalogue_${_name} zero "${_header}.${_case},-,-,-"
+                   $<TARGET_FILE:geomint-scheme> --analyse --scheme ${_name} --csv)
+endforeach()
+geomint_cli_test(geomint_cli_scheme_catalogue_text zero
+                 "catalogue method forest-ruth .Forest-Ruth; Forest & Ruth 1990.: forest-ruth .rkn, 3 stages.*order 4 .*symplectic: yes"
+                 $<TARGET_FILE:geomint-scheme> --analyse --scheme forest-ruth)
+# --print-tableau: a tableau file (Gauss s = 3: c = 1/2 -+ sqrt 15/10, b = (5, 8, 5)/18;
+# Hairer & Wanner II, section IV.5), read back with the same analysis.
+geomint_cli_test(geomint_cli_scheme_catalogue_print zero
+                 "kind rk.stages 3.name gauss-3.field r.2-15.c 1/2-1/10[*]r 1/2 1/2[+]1/10[*]r.a [^\n]*.b 5/18 4/9 5/18"
+                 $<TARGET_FILE:geomint-scheme> --print-tableau --scheme gauss-3)
+# (The IIIA-IIIB pairs are left out: their P-series analysis to order 8 takes 15 s in the test
+# build; tests/methods/test_catalogue.cpp checks them.)
+foreach(_name gauss-3 radau-ia-3 forest-ruth demp-rkn43 nystrom-4)
+  add_test(NAME geomint_cli_scheme_catalogue_round_trip_${_name}
+           COMMAND ${CMAKE_COMMAND} -DSCHEME=$<TARGET_FILE:geomint-scheme> -DNAME=${_name}
+                   -DFILE=${CMAKE_CURRENT_BINARY_DIR}/catalogue_${_name}.tableau -P ${CMAKE_CURRENT_SOURCE_DIR}/catalogue_round_trip.cmake)
+endforeach()
+geomint_cli_test(geomint_cli_scheme_catalogue_list zero "name,kind,stages,order,title,source.gauss-2,rk,2,4,.*nystrom-4,nystrom,4,4,"
+                 $<TARGET_FILE:geomint-scheme> --list-methods)
+# Usage errors: options of the built-in schemes, no mode, --tableau, an unknown name.
+geomint_cli_test(geomint_cli_scheme_catalogue_m 2 "--m and --nodes do not apply to --scheme gauss-3 .a method of the catalogue.*usage: geomint-scheme"
+                 $<TARGET_FILE:geomint-scheme> --analyse --scheme gauss-3 --m 3)
+geomint_cli_test(geomint_cli_scheme_catalogue_no_mode 2 "--scheme gauss-3 .a method of the catalogue. is used with --analyse or --print-tableau.*usage: geomint-scheme"
+                 $<TARGET_FILE:geomint-scheme> --scheme gauss-3)
+geomint_cli_test(geomint_cli_scheme_catalogue_tableau 2 "--scheme and --tableau FILE exclude each other.*usage: geomint-scheme"
+                 $<TARGET_FILE:geomint-scheme> --analyse --scheme gauss-3 --tableau ${PROJECT_SOURCE_DIR}/examples/tableaux/gauss2.tableau)
+geomint_cli_test(geomint_cli_scheme_catalogue_unknown 2 "--scheme must be one of lpf, midpoint, trapezoidal, galerkin or a method of the catalogue .geomint-scheme --list-methods.; got 'gauss-9'.*usage: geomint-scheme"
+                 $<TARGET_FILE:geomint-scheme> --analyse --scheme gauss-9)
+geomint_cli_test(geomint_cli_scheme_catalogue_list_alone 2 "--list-methods takes no other option.*usage: geomint-scheme"
+                 $<TARGET_FILE:geomint-scheme> --list-methods --scheme gauss-3)

@@ -1,0 +1,70 @@
+// Compile-time checks of the catalogue's explicit rational methods (methods/catalogue.hpp)
+// against their published properties: the constexpr exact analysis of analysis/ (order by the
+// Nystrom trees, symplecticity by Suris' conditions, symmetry up to a permutation of stages,
+// linear stability on y'' = -y) over the same constexpr tableaux the integrator runs. The
+// expected values are the sources' (cited per method) or exact mathematics (said where).
+#include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/order_conditions.hpp"
+#include "geomint/analysis/rkn_tableau.hpp"
+#include "geomint/analysis/scheme_structure.hpp"
+#include "geomint/methods/catalogue.hpp"
+
+namespace {
+
+using namespace geomint;
+
+/// An rkn<rational, S> as the analysis' exact tableau (values basis).
+template <int S>
+constexpr exact_rkn_tableau exact_of(const methods::rkn<rational, S>& t) {
+  return rational_rkn_tableau(t.c, t.a, t.bbar, t.b);
+}
+/// The rkn part of a nystrom tableau (its restriction to q'' = f(q), where ap does not enter).
+template <int S>
+constexpr exact_rkn_tableau exact_of(const methods::nystrom<rational, S>& t) {
+  return rational_rkn_tableau(t.c, t.a, t.bbar, t.b);
+}
+
+template <class Method>
+constexpr exact_rkn_tableau exact_tableau = exact_of(Method::tableau());
+
+template <class Method>
+constexpr bool has_order(int p) {
+  const order_summary s = order_analysis(exact_tableau<Method>);
+  return s.order == p && !s.order_is_lower_bound;
+}
+
+// Stormer-Verlet: order 2, symplectic, symmetric (Hairer, Lubich & Wanner 2006, sections I.1.4,
+// V.1, VI.3). On y'' = -y: q1 = (1 - h^2/2) q + h v, v1 = -h (1 - h^2/4) q + (1 - h^2/2) v, so
+// tr M = 2 - h^2 and det M = 1 (exact mathematics): periodic exactly for h^2 < 4.
+static_assert(has_order<methods::stormer_verlet>(2));
+static_assert(symplecticity(exact_tableau<methods::stormer_verlet>).symplectic);
+static_assert(symmetry(exact_tableau<methods::stormer_verlet>).symmetric);
+static_assert(linear_stability(exact_tableau<methods::stormer_verlet>).determinant_is_one);
+static_assert(linear_stability_interval(linear_stability(exact_tableau<methods::stormer_verlet>)).kind == stability_kind::periodic);
+static_assert(linear_stability_interval(linear_stability(exact_tableau<methods::stormer_verlet>)).compare_squared(exact_number(4)) == 0);
+
+// Ruth's method: order 3, symplectic (Ruth 1983; Forest & Ruth 1990); not symmetric (its
+// adjoint has the kicks and drifts in reverse order, which is another method).
+static_assert(has_order<methods::ruth3>(3));
+static_assert(symplecticity(exact_tableau<methods::ruth3>).symplectic);
+static_assert(!symmetry(exact_tableau<methods::ruth3>).symmetric);
+static_assert(linear_stability(exact_tableau<methods::ruth3>).determinant_is_one);  // symplectic: det M = 1
+
+// Dormand, El-Mikkawy & Prince 1987: RKN4(3)4FM has orders 4 and 3, RKN6(4)6FM 6 and 4;
+// they are not constructed to be symplectic, and Suris' conditions fail, so det M != 1 on
+// y'' = -y.
+static_assert(has_order<methods::demp_rkn43>(4));
+static_assert(has_order<methods::demp_rkn43_embedded>(3));
+static_assert(has_order<methods::demp_rkn64>(6));
+static_assert(has_order<methods::demp_rkn64_embedded>(4));
+static_assert(!symplecticity(exact_tableau<methods::demp_rkn43>).symplectic);
+static_assert(!symplecticity(exact_tableau<methods::demp_rkn64>).symplectic);
+static_assert(!linear_stability(exact_tableau<methods::demp_rkn43>).determinant_is_one);
+static_assert(!linear_stability(exact_tableau<methods::demp_rkn64>).determinant_is_one);
+
+// Nystrom's method (Hairer, Norsett & Wanner I, section II.14): order 4; on q'' = f(q) its rkn
+// part has order 4 too (the conditions there are a subset).
+static_assert(has_order<methods::nystrom4>(4));
+static_assert(!symplecticity(exact_tableau<methods::nystrom4>).symplectic);
+
+}  // namespace
