@@ -52,4 +52,27 @@ inline tableau composed_midpoint() {
   return rk({q(1, 6), q(2, 3)}, {{q(1, 6), q(0)}, {q(1, 3), q(1, 3)}}, {q(1, 3), q(2, 3)});
 }
 
+/// The Runge-Kutta method "first, then second" (each on a full step h; HNW section II.12).
+inline tableau then(const tableau& first, const tableau& second) {
+  const std::size_t s = first.b.size(), r = second.b.size();
+  tableau t = rk(std::vector<Q>(s + r, Q(0)), std::vector<std::vector<Q>>(s + r, std::vector<Q>(s + r, Q(0))), {});
+  for (std::size_t i = 0; i < s; ++i) {
+    for (std::size_t j = 0; j < s; ++j) t.a[i][j] = first.a[i][j];
+    t.b.push_back(first.b[i]);
+  }
+  for (std::size_t i = 0; i < r; ++i) {
+    for (std::size_t j = 0; j < s; ++j) t.a[s + i][j] = first.b[j];
+    for (std::size_t j = 0; j < r; ++j) t.a[s + i][s + j] = second.a[i][j];
+    t.b.push_back(second.b[i]);
+  }
+  t.stages = static_cast<int>(s + r);
+  return t;
+}
+
+/// chi^{-1} o phi o chi with chi the explicit Euler step of size theta h (its inverse: implicit
+/// Euler with step -theta h).
+inline tableau conjugated(const tableau& phi, const Q& theta) {
+  return then(then(rk({q(0)}, {{q(0)}}, {theta}), phi), rk({-theta}, {{-theta}}, {-theta}));
+}
+
 }  // namespace bseries_test_methods
