@@ -5,6 +5,7 @@
 /// s = 2 does not satisfy c_i = sum_j a_ij; c is unused by the series.
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include "geomint/analysis/bseries/modified_equation.hpp"
 #include "geomint/analysis/bseries/series.hpp"
 
 namespace bseries_test_methods {
@@ -73,6 +74,24 @@ inline tableau then(const tableau& first, const tableau& second) {
 /// Euler with step -theta h).
 inline tableau conjugated(const tableau& phi, const Q& theta) {
   return then(then(rk({q(0)}, {{q(0)}}, {theta}), phi), rk({-theta}, {{-theta}}, {-theta}));
+}
+
+/// The modified field b of a tableau (rk or prk) on `trees`.
+inline std::vector<Q> modified_field_of(const geomint::analysis::bseries::tree_set& trees, const tableau& method) {
+  return geomint::analysis::bseries::modified_field(trees, geomint::analysis::bseries::elementary_weights(trees, method));
+}
+
+/// Stormer-Verlet as an RKN tableau (HLW section I.1.4): c = (0, 1), A = [[0, 0], [1/2, 0]],
+/// bbar = (1/2, 0), b = (1/2, 1/2).
+inline tableau verlet_rkn() {
+  tableau v;
+  v.kind = geomint::methods::method_kind::rkn;
+  v.stages = 2;
+  v.c = {q(0), q(1)};
+  v.a = {{q(0), q(0)}, {q(1, 2), q(0)}};
+  v.bbar = {q(1, 2), q(0)};
+  v.b = {q(1, 2), q(1, 2)};
+  return v;
 }
 
 }  // namespace bseries_test_methods

@@ -26,17 +26,13 @@ namespace bseries_conjugate_symplecticity_test {
 using namespace bseries_test_methods;
 using namespace geomint::analysis::bseries;
 
-std::vector<Q> field_of(const tree_set& trees, const tableau& method) {
-  return modified_field(trees, elementary_weights(trees, method));
-}
-
 TEST_CASE("bseries conjugate symplecticity: symplectic and conjugate-symplectic methods to the order checked", "[bseries]") {
   const tree_set trees(8, 1);
   const std::vector<tableau> methods = {implicit_midpoint(), composed_midpoint(), lobatto_iiia_2(),
                                         conjugated(composed_midpoint(), q(1, 3)), conjugated(implicit_midpoint(), q(-2, 5))};
   for (std::size_t k = 0; k < methods.size(); ++k) {
     INFO("method " << k);
-    const auto b = field_of(trees, methods[k]);
+    const auto b = modified_field_of(trees, methods[k]);
     const conjugate_symplecticity_verdict v = conjugate_symplecticity(trees, b);
     CHECK(v.order_is_lower_bound);
     CHECK(v.order == 7);
@@ -52,7 +48,7 @@ TEST_CASE("bseries conjugate symplecticity: symplectic and conjugate-symplectic 
   // rule, conjugate symplectic, HLW section VI.8).
   const tree_set pairs(6, 2);
   for (const tableau& pair : {pair_of(lobatto_iiia_3(), lobatto_iiib_3()), pair_of(lobatto_iiia_2(), lobatto_iiia_2())}) {
-    const conjugate_symplecticity_verdict v = conjugate_symplecticity(pairs, field_of(pairs, pair));
+    const conjugate_symplecticity_verdict v = conjugate_symplecticity(pairs, modified_field_of(pairs, pair));
     CHECK(v.order_is_lower_bound);
     CHECK(v.order == 5);
   }
@@ -63,15 +59,9 @@ TEST_CASE("bseries conjugate symplecticity: RKN methods on the Nystrom trees", "
   // its partitioned form (natural H) a modified energy exists to every order checked. On all
   // trees the conversion's coefficients on the other trees say nothing about the method.
   const tree_set trees(6, 2);
-  tableau verlet;
-  verlet.kind = geomint::methods::method_kind::rkn;
-  verlet.stages = 2;
-  verlet.c = {q(0), q(1)};
-  verlet.a = {{q(0), q(0)}, {q(1, 2), q(0)}};
-  verlet.bbar = {q(1, 2), q(0)};
-  verlet.b = {q(1, 2), q(1, 2)};
+  const tableau verlet = verlet_rkn();
   const auto nystrom = hamiltonian_trees(trees, hamiltonian_class::natural, 0);
-  const auto b = field_of(trees, partitioned_form_of(verlet));
+  const auto b = modified_field_of(trees, partitioned_form_of(verlet));
   const conjugate_symplecticity_verdict v = conjugate_symplecticity(trees, b, &nystrom);
   CHECK(v.order_is_lower_bound);
   CHECK(v.order == 5);
@@ -81,7 +71,7 @@ TEST_CASE("bseries conjugate symplecticity: RKN methods on the Nystrom trees", "
 
 TEST_CASE("bseries conjugate symplecticity: explicit Euler stops at 1; a method of order p reaches at least p", "[bseries]") {
   const tree_set trees(8, 1);
-  const conjugate_symplecticity_verdict euler = conjugate_symplecticity(trees, field_of(trees, explicit_euler()));
+  const conjugate_symplecticity_verdict euler = conjugate_symplecticity(trees, modified_field_of(trees, explicit_euler()));
   CHECK_FALSE(euler.order_is_lower_bound);
   CHECK(euler.order == 1);
   const auto classes = free_trees(trees);
@@ -91,7 +81,7 @@ TEST_CASE("bseries conjugate symplecticity: explicit Euler stops at 1; a method 
     tableau method;
     int order;
   } cases[] = {{classical_rk4(), 4}, {radau_iia_2(), 3}, {lobatto_iiia_3(), 4}, {lobatto_iiib_3(), 4}};
-  for (const auto& c : cases) CHECK(conjugate_symplecticity(trees, field_of(trees, c.method)).order >= c.order);
+  for (const auto& c : cases) CHECK(conjugate_symplecticity(trees, modified_field_of(trees, c.method)).order >= c.order);
 }
 
 }  // namespace bseries_conjugate_symplecticity_test

@@ -226,29 +226,12 @@ poly separable_hamiltonian() {
   return h;
 }
 
-std::vector<Q> modified_field_of(const tree_set& trees, const tableau& method) {
-  return modified_field(trees, elementary_weights(trees, method));
-}
-
 tableau implicit_euler() { return rk({q(1)}, {{q(1)}}, {q(1)}); }
 /// Stormer-Verlet, kick-drift-kick (p in half steps): Lobatto IIIB on p, IIIA on q (HLW
 /// section II.2.2). With p on colour 0 (the convention of symplectic_conditions.hpp).
 tableau velocity_verlet() { return pair_of(lobatto_iiib_2(), lobatto_iiia_2()); }
 /// Drift-kick-drift (q in half steps): Lobatto IIIA on p, IIIB on q.
 tableau position_verlet() { return pair_of(lobatto_iiia_2(), lobatto_iiib_2()); }
-/// Stormer-Verlet as an RKN tableau (HLW section I.1.4): c = (0, 1), A = [[0, 0], [1/2, 0]],
-/// bbar = (1/2, 0), b = (1/2, 1/2).
-tableau verlet_rkn() {
-  tableau v;
-  v.kind = geomint::methods::method_kind::rkn;
-  v.stages = 2;
-  v.c = {q(0), q(1)};
-  v.a = {{q(0), q(0)}, {q(1, 2), q(0)}};
-  v.bbar = {q(1, 2), q(0)};
-  v.b = {q(1, 2), q(1, 2)};
-  return v;
-}
-
 TEST_CASE("bseries modified Hamiltonian: free trees counted against labelled trees (Cayley), two colours against oriented trees (OEIS A000238)", "[bseries]") {
   // Labelled counts: sum over free trees of n!/sigma(theta) is the number of labelled trees,
   // n^(n-2) (Cayley), and for two colours (each edge oriented p-end/q-end) 2^(n-1) n^(n-2).
