@@ -5,6 +5,7 @@
 /// s = 2 does not satisfy c_i = sum_j a_ij; c is unused by the series.
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include "geomint/analysis/bseries/modified_equation.hpp"
 #include "geomint/analysis/bseries/series.hpp"
 
 namespace bseries_test_methods {
@@ -50,6 +51,47 @@ inline tableau lobatto_iiib_2() { return rk({q(0), q(1)}, {{q(1, 2), q(0)}, {q(1
 /// HLW section VI.4), order 2, not symmetric.
 inline tableau composed_midpoint() {
   return rk({q(1, 6), q(2, 3)}, {{q(1, 6), q(0)}, {q(1, 3), q(1, 3)}}, {q(1, 3), q(2, 3)});
+}
+
+/// The Runge-Kutta method "first, then second" (each on a full step h; HNW section II.12).
+inline tableau then(const tableau& first, const tableau& second) {
+  const std::size_t s = first.b.size(), r = second.b.size();
+  tableau t = rk(std::vector<Q>(s + r, Q(0)), std::vector<std::vector<Q>>(s + r, std::vector<Q>(s + r, Q(0))), {});
+  for (std::size_t i = 0; i < s; ++i) {
+    for (std::size_t j = 0; j < s; ++j) t.a[i][j] = first.a[i][j];
+    t.b.push_back(first.b[i]);
+  }
+  for (std::size_t i = 0; i < r; ++i) {
+    for (std::size_t j = 0; j < s; ++j) t.a[s + i][j] = first.b[j];
+    for (std::size_t j = 0; j < r; ++j) t.a[s + i][s + j] = second.a[i][j];
+    t.b.push_back(second.b[i]);
+  }
+  t.stages = static_cast<int>(s + r);
+  return t;
+}
+
+/// chi^{-1} o phi o chi with chi the explicit Euler step of size theta h (its inverse: implicit
+/// Euler with step -theta h).
+inline tableau conjugated(const tableau& phi, const Q& theta) {
+  return then(then(rk({q(0)}, {{q(0)}}, {theta}), phi), rk({-theta}, {{-theta}}, {-theta}));
+}
+
+/// The modified field b of a tableau (rk or prk) on `trees`.
+inline std::vector<Q> modified_field_of(const geomint::analysis::bseries::tree_set& trees, const tableau& method) {
+  return geomint::analysis::bseries::modified_field(trees, geomint::analysis::bseries::elementary_weights(trees, method));
+}
+
+/// Stormer-Verlet as an RKN tableau (HLW section I.1.4): c = (0, 1), A = [[0, 0], [1/2, 0]],
+/// bbar = (1/2, 0), b = (1/2, 1/2).
+inline tableau verlet_rkn() {
+  tableau v;
+  v.kind = geomint::methods::method_kind::rkn;
+  v.stages = 2;
+  v.c = {q(0), q(1)};
+  v.a = {{q(0), q(0)}, {q(1, 2), q(0)}};
+  v.bbar = {q(1, 2), q(0)};
+  v.b = {q(1, 2), q(1, 2)};
+  return v;
 }
 
 }  // namespace bseries_test_methods
