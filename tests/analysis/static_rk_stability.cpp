@@ -15,6 +15,7 @@
 ///   Lobatto IIIA symmetric, Radau and the Euler methods not; implicit Euler over h/2 followed
 ///   by explicit Euler over h/2 is symmetric (HLW section II.3: Phi*_{h/2} o Phi_{h/2}), its two
 ///   stages with the equal node 1/2 exchanged by the adjoint;
+/// - on y'' = -y: see the last block;
 /// - stage order (largest q with B(q) and C(q); HW II sections IV.5 and IV.15): Gauss s
 ///   (B(2s), C(s)), Radau IIA s (B(2s-1), C(s)), Radau IA s - 1 (C(s-1)), Lobatto IIIA s
 ///   (B(2s-2), C(s)), explicit RK4 1 (C(2) fails: a_21 c_1 = 0 != c_2^2 / 2).
@@ -100,5 +101,15 @@ static_assert(geomint::stage_order(midpoint) == 1 && geomint::stage_order(implic
 static_assert(geomint::stage_order(radau_iia2) == 2 && geomint::stage_order(radau_ia2) == 1);
 static_assert(geomint::stage_order(trapezoidal) == 2 && geomint::stage_order(lobatto_iiia3) == 3);
 static_assert(geomint::stage_order(rk4) == 1);
+
+// On y'' = -y (constexpr linear_stability of a fixed-size tableau): RK4's interval is its
+// imaginary-axis interval 2 sqrt 2; the Lobatto IIIA-IIIB pair s = 2 is Stormer-Verlet (HLW
+// section II.2): det M = 1, tr M = 2 - tau^2, periodic for tau <= 2.
+static_assert(geomint::linear_stability_interval(geomint::linear_stability(rk4)).compare_squared(exact_number(8)) == 0);
+constexpr auto lobatto_pair2 = geomint::methods::make_prk<R>({R(0), R(1)}, {{R(0), R(0)}, {R(1, 2), R(1, 2)}}, {R(1, 2), R(1, 2)},
+                                                             {{R(1, 2), R(0)}, {R(1, 2), R(0)}}, {R(1, 2), R(1, 2)});
+constexpr geomint::linear_stability_result pair2_v = geomint::linear_stability(lobatto_pair2);
+static_assert(pair2_v.determinant_is_one && geomint::linear_stability_interval(pair2_v).compare_squared(exact_number(4)) == 0);
+static_assert(geomint::is_symmetric(lobatto_pair2) && geomint::stage_order(lobatto_pair2) == 0);
 
 }  // namespace

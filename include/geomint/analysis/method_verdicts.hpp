@@ -25,7 +25,8 @@
 ///   rkn and nystrom as analysis/order_conditions.hpp's stage_order: the largest r with
 ///   A c^k = c^(k+2) / ((k+1)(k+2)) (nystrom also Ap c^k = c^(k+1) / (k+1)) for k = 0..r-2. Up
 ///   to 2 S + 2. Run time (tableau_data).
-/// - `linear_stability(t)` (run time): the step on y'' = -y (q' = p, p' = -q) of every kind,
+/// - `linear_stability(t)`: the step on y'' = -y (q' = p, p' = -q) of every kind (constexpr for
+///   the fixed-size tableaux over a constexpr K, run time for tableau_data),
 ///   through its Nystrom form (methods/nystrom_form.hpp; rk on the first-order form, prk as
 ///   q' = p by (A, b) and p' = -q by (Ahat, bhat)): D = det(I + z A) and the bordered
 ///   determinants of linear_stability.hpp evaluated over K at z = 0..S and interpolated, then
@@ -151,19 +152,81 @@ constexpr int rkn_stage_order(const Matrix& a, const Matrix* ap, const Weights& 
   return limit;
 }
 
-/// det [[I + z A, u], [v^T, 0]] (bordered) or det(I + z A) of a Nystrom form over K at z.
-template <class K>
-K nystrom_determinant(const methods::nystrom_form<K>& f, const K& z, const std::vector<K>* u, const std::vector<K>* v) {
-  const auto s = static_cast<std::size_t>(f.stages), n = u ? s + 1 : s;
-  std::vector<std::vector<K>> m(n, std::vector<K>(n, K(0)));
-  for (std::size_t i = 0; i < s; ++i)
-    for (std::size_t j = 0; j < s; ++j) m[i][j] = K(i == j ? 1 : 0) + z * f.a[i][j];
-  if (u)
+/// The step on y'' = -y of the RKN coefficients (c, a, bbar, b) over K (see the header comment):
+/// D = det(I + z A) and the bordered determinants det [[I + z A, u], [v^T, 0]] at z = 0..s,
+/// interpolated. `work` is an (s + 1) x (s + 1) matrix of K, `values` holds s + 1 entries.
+template <class K, class Vector, class Matrix, class Work, class Values>
+constexpr linear_stability_result oscillator_stability(const Vector& c, const Matrix& a, const Vector& bbar, const Vector& b,
+                                                       std::size_t s, Work work, const Values& values) {
+  Vector one = c;
+  for (std::size_t i = 0; i < s; ++i) one[i] = K(1);
+  Values D = values, bbar_one = values, bbar_c = values, b_one = values, b_c = values;
+  auto bordered = [&](const K& z, const Vector* u, const Vector* v) {
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) work[i][j] = K(i == j ? 1 : 0) + z * a[i][j];
+    if (!u) return determinant<K>(work, s);
     for (std::size_t i = 0; i < s; ++i) {
-      m[i][s] = (*u)[i];
-      m[s][i] = (*v)[i];
+      work[i][s] = (*u)[i];
+      work[s][i] = (*v)[i];
     }
-  return determinant<K>(m, n);
+    work[s][s] = K(0);
+    return determinant<K>(work, s + 1);
+  };
+  for (std::size_t k = 0; k <= s; ++k) {
+    const K z(static_cast<std::int64_t>(k));
+    D[k] = bordered(z, nullptr, nullptr);
+    bbar_one[k] = bordered(z, &one, &bbar);
+    bbar_c[k] = bordered(z, &c, &bbar);
+    b_one[k] = bordered(z, &one, &b);
+    b_c[k] = bordered(z, &c, &b);
+  }
+  return linear_stability_from_determinants(to_qpoly(interpolate<K>(D, s)), to_qpoly(interpolate<K>(bbar_one, s)),
+                                            to_qpoly(interpolate<K>(bbar_c, s)), to_qpoly(interpolate<K>(b_one, s)),
+                                            to_qpoly(interpolate<K>(b_c, s)));
+}
+
+/// The RKN coefficients of a fixed-size tableau on q'' = f(q) (methods/nystrom_form.hpp's
+/// conversion: rk and prk give c = A 1, A Ahat, b^T Ahat, bhat with Ahat = A, bhat = b for rk).
+template <class K, int S>
+struct rkn_coefficients {
+  methods::stage_vector<K, S> c{}, bbar{}, b{};
+  methods::stage_matrix<K, S> a{};
+};
+template <class Tableau>
+constexpr auto rkn_coefficients_of(const Tableau& t) {
+  using K = typename Tableau::coefficient;
+  constexpr std::size_t s = static_cast<std::size_t>(Tableau::stages);
+  rkn_coefficients<K, Tableau::stages> r;
+  K sum_b(0);
+  for (std::size_t j = 0; j < s; ++j) sum_b = sum_b + t.b[j];
+  if constexpr (requires { t.bbar; }) {
+    r.c = t.c;
+    r.a = t.a;
+    r.bbar = t.bbar;
+    r.b = t.b;
+    sum_b = K(1);  // q1 = q + h v + ...: consistent by construction
+  } else {
+    const auto& ahat = [&]() -> const methods::stage_matrix<K, Tableau::stages>& {
+      if constexpr (requires { t.ahat; }) return t.ahat;
+      else return t.a;
+    }();
+    for (std::size_t i = 0; i < s; ++i) {
+      K row(0), weight(0);
+      for (std::size_t j = 0; j < s; ++j) {
+        row = row + t.a[i][j];
+        weight = weight + t.b[j] * ahat[j][i];
+        K product(0);
+        for (std::size_t k = 0; k < s; ++k) product = product + t.a[i][k] * ahat[k][j];
+        r.a[i][j] = product;
+      }
+      r.c[i] = row;
+      r.bbar[i] = weight;
+    }
+    if constexpr (requires { t.bhat; }) r.b = t.bhat;
+    else r.b = t.b;
+  }
+  if (!(sum_b == K(1))) throw std::domain_error("the weights b do not sum to 1 (the method is not consistent)");
+  return r;
 }
 
 }  // namespace analysis::detail
@@ -218,22 +281,20 @@ linear_stability_result linear_stability(const methods::tableau_data<K>& t) {
   if (f.stages > max_exact_stages) throw std::domain_error("the exact stability analysis takes at most 8 stages");
   if (!(f.d == K(1))) throw std::domain_error("the weights b do not sum to 1 (the method is not consistent)");
   const auto s = static_cast<std::size_t>(f.stages);
-  const std::vector<K> one(s, K(1));
-  std::vector<K> D(s + 1), bbar_one(s + 1), bbar_c(s + 1), b_one(s + 1), b_c(s + 1);
-  for (std::size_t k = 0; k <= s; ++k) {
-    const K z(static_cast<std::int64_t>(k));
-    using analysis::detail::nystrom_determinant;
-    D[k] = nystrom_determinant<K>(f, z, nullptr, nullptr);
-    bbar_one[k] = nystrom_determinant<K>(f, z, &one, &f.bbar);
-    bbar_c[k] = nystrom_determinant<K>(f, z, &f.c, &f.bbar);
-    b_one[k] = nystrom_determinant<K>(f, z, &one, &f.b);
-    b_c[k] = nystrom_determinant<K>(f, z, &f.c, &f.b);
-  }
-  using analysis::detail::interpolate;
-  using analysis::detail::to_qpoly;
-  return analysis::detail::linear_stability_from_determinants(
-      to_qpoly(interpolate<K>(D, s)), to_qpoly(interpolate<K>(bbar_one, s)), to_qpoly(interpolate<K>(bbar_c, s)),
-      to_qpoly(interpolate<K>(b_one, s)), to_qpoly(interpolate<K>(b_c, s)));
+  return analysis::detail::oscillator_stability<K>(f.c, f.a, f.bbar, f.b, s, std::vector<std::vector<K>>(s + 1, std::vector<K>(s + 1, K(0))),
+                                                   std::vector<K>(s + 1, K(0)));
+}
+
+/// The exact step on y'' = -y of a fixed-size tableau of any kind (constexpr over a constexpr K).
+template <class Tableau>
+  requires requires(const Tableau& t) { Tableau::kind; t.c; }
+constexpr linear_stability_result linear_stability(const Tableau& t) {
+  static_assert(Tableau::stages <= max_exact_stages, "geomint::linear_stability: at most max_exact_stages (8) stages");
+  using K = typename Tableau::coefficient;
+  constexpr std::size_t s = static_cast<std::size_t>(Tableau::stages);
+  const auto r = analysis::detail::rkn_coefficients_of(t);
+  return analysis::detail::oscillator_stability<K>(r.c, r.a, r.bbar, r.b, s, std::array<std::array<K, s + 1>, s + 1>{},
+                                                   std::array<K, s + 1>{});
 }
 
 /// The verdict of the CSV column `stability`.
