@@ -8,7 +8,8 @@
 //       stability (interval of periodicity or of absolute stability), dissipation, phase lag
 //   geomint-scheme --analyse --tableau FILE [--csv]
 //       order (B-/P-series against the exact flow) and symplecticity of the method of a tableau
-//       file, exactly over its coefficients (include/geomint/analysis/bseries/method_analysis.hpp)
+//       file, exactly over its coefficients (include/geomint/analysis/bseries/method_analysis.hpp),
+//       symmetry, stage order and linear stability (analysis/method_verdicts.hpp, rk_stability.hpp)
 //   geomint-scheme --print-tableau [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all]
 //       the exact tableau (node polynomial and monomial-basis matrices, or rationals)
 //   geomint-scheme --analyse|--print-tableau --scheme NAME [--csv]; geomint-scheme --list-methods
@@ -33,6 +34,7 @@
 #include "../common/cli.hpp"
 #include "geomint/analysis/bseries/method_analysis.hpp"
 #include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/method_verdicts.hpp"
 #include "geomint/analysis/order_conditions.hpp"
 #include "geomint/analysis/rkn_tableau.hpp"
 #include "geomint/analysis/scheme_structure.hpp"
@@ -67,8 +69,13 @@ const char* usage_text =
     "              analysed exactly over its coefficients: order from the B-series (rk, trees to\n"
     "              order 10) or P-series (prk; rkn and nystrom on their Nystrom trees; to order 8)\n"
     "              against the exact flow, symplecticity by the tree conditions up to that order\n"
-    "              (rk, prk) or the exact RKN conditions (rkn, nystrom); the same CSV columns, '-'\n"
-    "              for those not computed for a file; excludes --scheme, --nodes and --m\n"
+    "              (rk, prk) or the exact RKN conditions (rkn, nystrom); symmetry up to any stage\n"
+    "              permutation, stage order; rk: R(z) on y' = lambda y, A- and L-stability, the\n"
+    "              imaginary-axis interval (stability a-stable, else its kind); every kind: the step\n"
+    "              on y'' = -y (prk, rkn, nystrom: stability periodic|absolute|none). The same CSV\n"
+    "              columns; error_constant '-', and the stability columns '-' where the exact\n"
+    "              analysis needs rational stability polynomials, at most 8 stages and sum b = 1\n"
+    "              and the file's method has not them; excludes --scheme, --nodes and --m\n"
     "  --print-tableau  the exact tableau of a built-in scheme: node polynomial N and the\n"
     "              matrices on Q[x]/(N) in the monomial basis (or rationals), with 30-digit\n"
     "              decimals of c, a, bbar, b\n"
@@ -146,21 +153,24 @@ std::string polynomial_in_tau(const stability_polynomial& p, const char* var = "
     if (k != 0) {
       if (magnitude != "1") out += ' ';
       out += var;
-      out += '^';
-      out += std::to_string(power_step * k);
+      if (power_step * k != 1) {
+        out += '^';
+        out += std::to_string(power_step * k);
+      }
     }
   }
   return out.empty() ? "0" : out;
 }
 
-/// tau* of the stability interval (0, tau*): inf, 0 when empty, or 30 digits.
-std::string stability_text(const linear_stability_result& r) {
-  const stability_interval iv = linear_stability_interval(r).refined(120);
+/// tau* of a stability interval (0, tau*) (its bound is tau*^2): inf, 0 when empty, or 30 digits.
+std::string interval_text(const stability_interval& interval) {
+  const stability_interval iv = interval.refined(120);
   if (iv.empty) return "0";
   if (iv.unbounded) return "inf";
   using std::sqrt;
   return digits30(sqrt(to_decimal(iv.low())));
 }
+std::string stability_text(const linear_stability_result& r) { return interval_text(linear_stability_interval(r)); }
 
 /// "periodic", "absolute" or "none" (empty interval).
 std::string stability_kind_text(const linear_stability_result& r) {
@@ -219,22 +229,47 @@ const char* analyse_header =
     "stage_order,stability,dissipation_order\n";
 
 /// --analyse --tableau FILE: the exact series analysis of the file's method (the tableau read
-/// by read_tableau_file, the data geomint-run --tableau integrates).
+/// by read_tableau_file, the data geomint-run --tableau integrates) and its verdicts
+/// (analysis/method_verdicts.hpp): symmetry, stage order, linear stability.
 int analyse_file(const options& o, const methods::tableau_data<methods::field_element>& t) {
   const analysis::bseries::method_analysis r = analysis::bseries::analyse_method(t);
+  const method_verdicts v = verdicts(t);
   const std::string order = std::to_string(r.order) + (r.order_is_lower_bound ? "+" : "");
   const std::string name = t.name.empty() ? std::string("-") : t.name;
   const std::string kind(methods::to_string(t.kind));
+  const linear_stability_result& ls = v.oscillator;
+  const std::string dissipation = !v.has_oscillator ? "-" : (ls.determinant_is_one ? "inf" : std::to_string(ls.dissipation_order));
   if (o.csv) {
-    std::cout << analyse_header << name << ",-,-," << t.stages << "," << order << "," << (r.symplectic ? "yes" : "no")
-              << ",-,-,-,-," << kind << ",-,-,-\n";
-  } else {
-    std::cout << o.method_label << ": " << name << " (" << kind << ", " << t.stages << " stages)\n"
-              << "  order " << order << " (" << (r.colours == 1 ? "B-series, rooted trees" : "P-series, bi-coloured trees")
-              << (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom ? " of the Nystrom form" : "")
-              << " up to order " << r.tree_order << ")\n"
-              << "  symplectic: " << (r.symplectic ? "yes" : "no") << " (" << r.symplecticity_basis << ")\n";
+    std::cout << analyse_header << name << ",-,-," << t.stages << "," << order << "," << (r.symplectic ? "yes" : "no") << ","
+              << (v.symmetric ? "yes" : "no") << ",-," << (v.has_stability ? interval_text(v.interval) : "-") << ","
+              << (v.has_oscillator ? std::to_string(ls.phase_lag_order) : "-") << "," << kind << "," << v.stage_order << ","
+              << (v.has_stability ? std::string(to_string(v.stability)) : "-") << "," << dissipation << "\n";
+    return cli::finish_stdout("geomint-scheme");
   }
+  std::cout << o.method_label << ": " << name << " (" << kind << ", " << t.stages << " stages)\n"
+            << "  order " << order << " (" << (r.colours == 1 ? "B-series, rooted trees" : "P-series, bi-coloured trees")
+            << (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom ? " of the Nystrom form" : "")
+            << " up to order " << r.tree_order << "), stage order " << v.stage_order << "\n"
+            << "  symplectic: " << (r.symplectic ? "yes" : "no") << " (" << r.symplecticity_basis << "); symmetric: "
+            << (v.symmetric ? "yes" : "no") << " (up to a permutation of the stages)\n";
+  if (t.kind == methods::method_kind::rk) {
+    if (v.has_rk)
+      std::cout << "  y' = lambda y: R(z) = (" << polynomial_in_tau(v.rk.numerator, "z", 1) << ")/("
+                << polynomial_in_tau(v.rk.denominator, "z", 1) << "); A-stable: " << (v.rk.a_stable ? "yes" : "no")
+                << ", L-stable: " << (v.rk.l_stable ? "yes" : "no") << "; |R(iy)| <= 1 for 0 <= y <= " << interval_text(v.rk.imaginary_axis)
+                << "\n";
+    else
+      std::cout << "  y' = lambda y: not decided (" << v.rk_reason << ")\n";
+  }
+  if (v.has_oscillator)
+    std::cout << "  y'' = -y: " << (ls.determinant_is_one ? "det M = 1, interval of periodicity" : "det M != 1, interval of absolute stability")
+              << " tau* = " << stability_text(ls) << "; phase-lag order " << ls.phase_lag_order << ", constant "
+              << ls.phase_lag_constant.str() << "; dissipation "
+              << (ls.determinant_is_one ? std::string("none") : "order " + dissipation + ", constant " + ls.dissipation_constant.str())
+              << "\n";
+  else
+    std::cout << "  y'' = -y: not decided (" << v.oscillator_reason << ")\n";
+  if (v.has_stability) std::cout << "  stability: " << to_string(v.stability) << ", interval " << interval_text(v.interval) << "\n";
   return cli::finish_stdout("geomint-scheme");
 }
 

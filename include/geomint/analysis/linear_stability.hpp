@@ -220,33 +220,8 @@ constexpr series_term phase_series(const qpoly& Tn, const qpoly& D, const qpoly&
   throw std::domain_error("geomint::linear_stability: t / (2 sqrt d) - cos H vanishes to the series length");
 }
 
-}  // namespace analysis::detail
-
-/// The exact two-step form, order of R, phase lag and dissipation of a tableau.
-constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
-  using analysis::detail::qpoly;
-  using analysis::detail::z_times;
-  const qpoly D = analysis::detail::bordered_determinant(t, false, t.one, t.b);
-  const qpoly E_bbar_one = analysis::detail::bordered_determinant(t, true, t.one, t.bbar);
-  const qpoly E_bbar_c = analysis::detail::bordered_determinant(t, true, t.c, t.bbar);
-  const qpoly E_b_one = analysis::detail::bordered_determinant(t, true, t.one, t.b);
-  const qpoly E_b_c = analysis::detail::bordered_determinant(t, true, t.c, t.b);
-  // tr M = (2 D + z (E(bbar, 1) + E(b, c))) / D.
-  const qpoly trace_num = D + D + z_times(E_bbar_one + E_b_c);
-  // det M D^2 = (D + z E(bbar,1)) (D + z E(b,c)) - (D + z E(bbar,c)) z E(b,1).
-  const qpoly det_num = (D + z_times(E_bbar_one)) * (D + z_times(E_b_c)) - (D + z_times(E_bbar_c)) * z_times(E_b_one);
-  linear_stability_result out;
-  out.determinant_is_one = (det_num - D * D).degree < 0;
-
-  // One scaling lambda clears every denominator: lambda D, lambda Tn and lambda^2 Dn are integral.
-  stability_integer scale = analysis::detail::lcm_of_denominators(trace_num, stability_integer(1));
-  scale = analysis::detail::lcm_of_denominators(D, scale);
-  scale = analysis::detail::lcm_of_denominators(det_num, scale);
-  out.step_denominator = analysis::detail::integer_part_scaled(D, scale);
-  out.trace_polynomial = analysis::detail::integer_part_scaled(trace_num, scale);
-  out.determinant_polynomial = analysis::detail::integer_part_scaled(det_num, scale * scale);
-  stability_polynomial P = out.trace_polynomial;
-  stability_polynomial Q = out.step_denominator;
+/// P / Q in lowest terms in Z[z]: divided by gcd(P, Q) and the common content, Q(0) > 0.
+constexpr void reduce_fraction(stability_polynomial& P, stability_polynomial& Q) {
   const stability_polynomial G = polynomial_gcd(P, Q);
   if (G.degree > 0) {
     P = exact_quotient(P, G);
@@ -260,6 +235,29 @@ constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
     P = stability_integer(-1) * P;
     Q = stability_integer(-1) * Q;
   }
+}
+
+/// The analysis of the header comment from D = det(I + z A) and the bordered determinants
+/// E(v, u) = det [[I + z A, u], [v^T, 0]] (any tableau whose RKN step on y'' = -y they describe).
+constexpr linear_stability_result linear_stability_from_determinants(const qpoly& D, const qpoly& E_bbar_one, const qpoly& E_bbar_c,
+                                                                     const qpoly& E_b_one, const qpoly& E_b_c) {
+  // tr M = (2 D + z (E(bbar, 1) + E(b, c))) / D.
+  const qpoly trace_num = D + D + z_times(E_bbar_one + E_b_c);
+  // det M D^2 = (D + z E(bbar,1)) (D + z E(b,c)) - (D + z E(bbar,c)) z E(b,1).
+  const qpoly det_num = (D + z_times(E_bbar_one)) * (D + z_times(E_b_c)) - (D + z_times(E_bbar_c)) * z_times(E_b_one);
+  linear_stability_result out;
+  out.determinant_is_one = (det_num - D * D).degree < 0;
+
+  // One scaling lambda clears every denominator: lambda D, lambda Tn and lambda^2 Dn are integral.
+  stability_integer scale = lcm_of_denominators(trace_num, stability_integer(1));
+  scale = lcm_of_denominators(D, scale);
+  scale = lcm_of_denominators(det_num, scale);
+  out.step_denominator = integer_part_scaled(D, scale);
+  out.trace_polynomial = integer_part_scaled(trace_num, scale);
+  out.determinant_polynomial = integer_part_scaled(det_num, scale * scale);
+  stability_polynomial P = out.trace_polynomial;
+  stability_polynomial Q = out.step_denominator;
+  reduce_fraction(P, Q);
   out.numerator = P;
   out.denominator = Q;
   // R - 2 cos: the integer E_k = (2k)! P_k - sum_i Q_i 2 (-1)^(k-i) (2k)!/(2(k-i))! is (2k)! times
@@ -267,7 +265,7 @@ constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
   const int last = P.degree + Q.degree + 1;
   bool expanded = false;
   for (int k = 0; k <= last && !expanded; ++k) {
-    stability_integer E = k <= P.degree ? analysis::detail::factorial(2 * k) * P[k] : stability_integer(0);
+    stability_integer E = k <= P.degree ? factorial(2 * k) * P[k] : stability_integer(0);
     for (int i = 0; i <= k && i <= Q.degree; ++i) {
       stability_integer ratio(2);
       for (int f = 2 * (k - i) + 1; f <= 2 * k; ++f) ratio *= stability_integer(f);
@@ -276,7 +274,7 @@ constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
     }
     if (!E.is_zero()) {
       out.order = 2 * k - 2;
-      out.leading_coefficient = exact_number(E, analysis::detail::factorial(2 * k) * Q[0]);
+      out.leading_coefficient = exact_number(E, factorial(2 * k) * Q[0]);
       expanded = true;
     }
   }
@@ -293,10 +291,20 @@ constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
   while (excess.c[k].num.is_zero()) ++k;
   out.dissipation_order = 2 * k - 1;
   out.dissipation_constant = -(excess.c[k] / (D.c[0] * D.c[0])) / exact_number(2);
-  const analysis::detail::series_term phase = analysis::detail::phase_series(trace_num, D, det_num);
+  const series_term phase = phase_series(trace_num, D, det_num);
   out.phase_lag_order = 2 * phase.index - 2;
   out.phase_lag_constant = phase.coefficient;
   return out;
+}
+
+}  // namespace analysis::detail
+
+/// The exact two-step form, order of R, phase lag and dissipation of a tableau.
+constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
+  using analysis::detail::bordered_determinant;
+  return analysis::detail::linear_stability_from_determinants(
+      bordered_determinant(t, false, t.one, t.b), bordered_determinant(t, true, t.one, t.bbar),
+      bordered_determinant(t, true, t.c, t.bbar), bordered_determinant(t, true, t.one, t.b), bordered_determinant(t, true, t.c, t.b));
 }
 
 /// Which interval a method has on y'' = -y.
