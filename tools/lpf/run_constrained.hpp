@@ -11,7 +11,7 @@
 #include "geomint/core/dispatch.hpp"
 #include "geomint/mechanics/constrained_systems.hpp"
 #include "geomint/schemes/paper23.hpp"
-#include "run_impl.hpp"
+#include "run.hpp"
 
 namespace geomint::run {
 
@@ -74,13 +74,13 @@ int run_constrained_fb(const options& o) {
   const T energy0 = integrator.energy(s);
   T worst_energy(0), worst_constraint = integrator.violation(s);
   if (o.csv) constrained_row<T, n>(s.step, s.t, s.q, s.p, energy0, integrator.violation(s));
-  tools::progress bar("geomint-run", static_cast<std::size_t>(o.steps), "steps");
+  cli::progress bar("geomint-run", static_cast<std::size_t>(o.steps), "steps");
   for (long k = 0; k < o.steps; ++k) {
     if (k % 4096 == 0) bar.set(static_cast<std::size_t>(k));  // (a terminal only)
     const step_status st = integrator.try_step(s);
     if (!st) {
       bar.finish();  // the message on a line of its own
-      return report_failure(st);
+      return report_failure(o, st);
     }
     using std::abs;
     const T energy = integrator.energy(s), violation = integrator.violation(s);
@@ -117,7 +117,7 @@ int run_paper23(const options& o) {
   vec<T, 2> prev = s.q;
   T worst_energy(0), worst_constraint(0);
   if (o.steps >= 1) {
-    if (const step_status st = starter.try_step(s); !st) return report_failure(st);
+    if (const step_status st = starter.try_step(s); !st) return report_failure(o, st);
   }
   vec<T, 2> curr = s.q;
   auto measure = [&](const vec<T, 2>& q, const vec<T, 2>& p) {
@@ -130,7 +130,7 @@ int run_paper23(const options& o) {
       try {
         next = paper23_step<T>(prev, curr, k - 1);
       } catch (const integration_error& e) {
-        return report_failure(e.status());
+        return report_failure(o, e.status());
       }
       prev = curr;
       curr = next;
@@ -143,7 +143,7 @@ int run_paper23(const options& o) {
     checked.step = k - 1;
     const monitor_point<T> current = measure(curr, p);
     monitor.check(tau, previous, current, checked);
-    if (!checked) return report_failure(checked);
+    if (!checked) return report_failure(o, checked);
     previous = current;
     if (abs(T(energy - energy0)) > worst_energy) worst_energy = abs(T(energy - energy0));
     if (violation > worst_constraint) worst_constraint = violation;

@@ -22,7 +22,7 @@ int run_constrained(const options& o) {
             << " is not compiled into this build (GEOMINT_RUN_MULTIPRECISION=OFF or GEOMINT_TOOL_UNITS)\n";
   return 2;
 #else
-  using T = tools::scalar_for_digits<Digits>;
+  using T = cli::scalar_for_digits<Digits>;
   if constexpr (System == constrained_system::circle)
     return run_constrained_system<systems::free_particle_2d, systems::unit_circle, T>(o);
   else

@@ -1,21 +1,35 @@
 #pragma once
-/// The flags shared by geomint-order and geomint-symplectic (on the common parser, cli.hpp): the
-/// selection of systems, schemes, node families and m, expanded into a list of study cases.
+/// The flags shared by the study front ends `order` and `symplectic` (geomint-order,
+/// geomint-symplectic; on the common parser, parser.hpp): the selection of systems, schemes, node
+/// families and m over a system_list, expanded into a list of study cases.
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <tuple>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <mutex>
 #include <thread>
 #include <vector>
 
-#include "cli.hpp"
-#include "progress.hpp"
-#include "stepper.hpp"
+#include "geomint/cli/digits.hpp"
+#include "geomint/cli/parser.hpp"
+#include "geomint/cli/progress.hpp"
+#include "geomint/cli/steppers.hpp"
 
-namespace geomint::studies {
+namespace geomint::cli {
+
+/// What makes one study program: its name, usage text (empty: the front end's own), default
+/// system (empty: the list's first) and --digits (0: the front end's), and the names that
+/// `--system` expands to groups (default: "all", every system of the list).
+struct study_tool {
+  std::string program;
+  std::string usage;
+  std::string default_system;
+  int default_digits = 0;
+  std::vector<std::pair<std::string, std::vector<std::string>>> groups;
+};
 
 /// One study case: a system and a scheme.
 struct study_case {
@@ -23,9 +37,10 @@ struct study_case {
   scheme_spec spec;
 };
 
-/// The flags common to the studies.
+/// The flags common to the studies, over the systems of List.
+template <class List>
 struct selection {
-  std::vector<std::string> systems = {"pendulum"};
+  std::vector<std::string> systems;
   std::vector<std::string> schemes = {"lpf"};
   std::vector<std::string> nodes = {"equispaced"};
   int m_low = 2, m_high = 2;
@@ -34,51 +49,62 @@ struct selection {
   bool m_given = false, nodes_given = false;  ///< whether --m, --nodes were given (check_cases)
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
 
-  /// Registers the flags common to the studies on the tool's parser.
-  void register_flags(cli::parser& cl, std::vector<std::string> allowed_digits) {
+  /// The defaults of `tool` (system, digits).
+  explicit selection(const study_tool& tool, int default_digits) {
+    systems = {tool.default_system.empty() ? system_names(List{}).front() : tool.default_system};
+    digits = tool.default_digits != 0 ? tool.default_digits : default_digits;
+  }
+
+  /// Registers the flags common to the studies on the tool's parser; `--system` takes a comma
+  /// list of names or a group of `tool` (default: "all", every system).
+  void register_flags(parser& cl, std::vector<std::string> allowed_digits, const study_tool& tool) {
+    auto groups = tool.groups;
+    if (groups.empty()) groups.push_back({"all", system_names(List{})});
     cl.toggle("--csv", [this] { csv = true; })
-        .value("--system", [this](const std::string& v) {
-          // "all": the built-in systems (every scheme); "zoo": the zoo systems (restricted set).
-          if (v == "all") systems = tools::builtin_systems();
-          else if (v == "zoo") systems = tools::zoo_systems();
-          else systems = cli::parse_choice_list("--system", v, tools::free_systems());
+        .value("--system", [this, groups](const std::string& v) {
+          for (const auto& g : groups)
+            if (v == g.first) {
+              systems = g.second;
+              return;
+            }
+          systems = parse_choice_list("--system", v, system_names(List{}));
         })
         .value("--scheme", [this](const std::string& v) {
           // "all": the schemes of every system; lpf-fixed-point (natural systems only) is named.
-          schemes = v == "all" ? tools::schemes_of_every_system() : cli::parse_choice_list("--scheme", v, tools::scheme_list());
+          schemes = v == "all" ? schemes_of_every_system() : parse_choice_list("--scheme", v, scheme_list());
         })
         .value("--nodes", [this](const std::string& v) {
-          nodes = cli::parse_node_family_list("--nodes", v);
+          nodes = parse_node_family_list("--nodes", v);
           nodes_given = true;
         })
         .value("--m", [this](const std::string& v) {
-          std::tie(m_low, m_high) = cli::parse_integer_range<int>("--m", v, 2, 8);
+          std::tie(m_low, m_high) = parse_integer_range<int>("--m", v, 2, 8);
           m_given = true;
         })
         .value("--digits", [this, allowed_digits](const std::string& v) {
-          digits = std::stoi(cli::parse_choice("--digits", v, allowed_digits));
+          digits = std::stoi(parse_choice("--digits", v, allowed_digits));
         })
-        .value("--threads", [this](const std::string& v) { threads = cli::parse_integer<unsigned>("--threads", v, 1, 64); });
+        .value("--threads", [this](const std::string& v) { threads = parse_integer<unsigned>("--threads", v, 1, 64); });
   }
 
-  /// Throws cli::usage_error (exit status 2) for a case whose system has no stepper for its
-  /// scheme in `digits` digits: a zoo system outside its restricted scheme set, or in 100 digits.
+  /// Throws usage_error (exit status 2) for a case whose system has no stepper for its scheme in
+  /// `digits` digits (lpf-fixed-point on a system that is not natural).
   void check_cases() const {
     // Options that no selected scheme uses are errors, not ignored.
     auto any_scheme = [&](auto&& pred) { return std::any_of(schemes.begin(), schemes.end(), pred); };
     std::string listed;
     for (const std::string& s : schemes) listed += (listed.empty() ? "" : ",") + s;
     if (m_given && !any_scheme([](const std::string& s) { return scheme_spec{s}.has_m(); }))
-      throw cli::usage_error("--m applies to --scheme lpf, lpf-fixed-point and galerkin only, not to --scheme " +
+      throw usage_error("--m applies to --scheme lpf, lpf-fixed-point and galerkin only, not to --scheme " +
                              listed);
     if (nodes_given && !any_scheme([](const std::string& s) { return s == "lpf"; }))
-      throw cli::usage_error("--nodes applies to --scheme lpf only, not to --scheme " + listed +
+      throw usage_error("--nodes applies to --scheme lpf only, not to --scheme " + listed +
                              " (galerkin's map does not depend on nodes; lpf-fixed-point is on Gauss-interior nodes)");
     for (const study_case& c : cases()) {
       try {
-        tools::with_digits(digits, [&]<int D>() { tools::check_scheme<tools::scalar_for_digits<D>>(c.system, c.spec); });
+        with_digits(digits, [&]<int D>() { check_scheme<scalar_for_digits<D>>(List{}, c.system, c.spec); });
       } catch (const std::invalid_argument& e) {
-        throw cli::usage_error(e.what());
+        throw usage_error(e.what());
       }
     }
   }
@@ -107,6 +133,13 @@ struct selection {
   }
 };
 
+/// The lines of a study's usage text that name its selection over the systems `names`.
+inline std::string selection_usage(const std::vector<std::string>& names) {
+  return "  systems: " + comma_list(names) + " (all); initial data as run\n"
+         "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems)\n"
+         "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n";
+}
+
 /// The width of the tables' scheme column: 13, or wider for a longer scheme name.
 inline int scheme_column_width(const std::vector<study_case>& cases) {
   std::size_t width = 13;
@@ -121,7 +154,7 @@ inline std::string m_label(const scheme_spec& s) { return s.has_m() ? std::to_st
 /// the progress line of `tool` on a terminal (progress.hpp).
 template <class Job>
 void parallel_for(std::size_t count, unsigned threads, Job&& job, const char* tool) {
-  tools::progress bar(tool, count, "runs");
+  progress bar(tool, count, "runs");
   std::vector<std::thread> pool;
   std::size_t next = 0;
   std::mutex lock;
@@ -141,4 +174,4 @@ void parallel_for(std::size_t count, unsigned threads, Job&& job, const char* to
   for (std::thread& t : pool) t.join();
 }
 
-}  // namespace geomint::studies
+}  // namespace geomint::cli

@@ -1,0 +1,281 @@
+#pragma once
+/// The `symplectic` front end (geomint-symplectic): the symplecticity defect ||J^T Omega J -
+/// Omega|| of the one-step map of each scheme on the systems of a system_list, and (with
+/// --long-steps) its long-time energy behaviour.
+#include <chrono>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <tuple>
+
+#include "geomint/analysis/symplecticity.hpp"
+#include "geomint/cli/study.hpp"
+
+namespace geomint::cli {
+
+namespace symplectic_detail {
+
+using boost::multiprecision::cpp_bin_float_100;
+using boost::multiprecision::cpp_bin_float_50;
+
+struct extra_options {
+  std::string tau = "0.25", long_tau;
+  std::vector<std::string> q0, p0;
+  long long_steps = 0;
+  bool monitor = true;
+};
+
+/// A number already checked by the parser (cli.hpp), read in the scalar T at full precision.
+template <class T>
+T parse_number(const std::string& flag, const std::string& s) {
+  std::istringstream in(s);
+  T v;
+  in >> v;
+  if (in.fail() || !in.eof() || !geomint::is_finite(v))
+    throw usage_error(flag + " expects a finite number, got '" + s + "'");
+  return v;
+}
+
+/// The initial state (q0, p0) of a case in the scalar T (default_initial_state: --p0 or
+/// the default velocity's momentum at q0).
+template <class T, class List>
+analysis::phase_vector<T> initial_state(List list, const std::string& system, const any_stepper<T>& stepper,
+                                        const extra_options& x) {
+  dynamic_vector<T> q, p;
+  try {
+    std::tie(q, p) = default_initial_state<T>(list, system, stepper, x.q0, x.p0,
+                                                     [](const std::string& s) { return parse_number<T>("--q0/--p0", s); });
+  } catch (const std::invalid_argument& e) {  // a wrong count of values: a usage error
+    throw usage_error(e.what());
+  }
+  analysis::phase_vector<T> z(2 * stepper.dof());
+  z << q, p;
+  return z;
+}
+
+/// The one-step map of a stepper as a phase_map; the status of its last failed step goes to
+/// *failure (if given), so that a failure keeps its reason (e.g. the step monitor's criterion).
+template <class T>
+analysis::phase_map<T> as_map(const any_stepper<T>& stepper, const T& tau, step_status* failure = nullptr) {
+  return [&stepper, tau, failure](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
+    const int n = stepper.dof();
+    const dynamic_vector<T> q = z.head(n), p = z.tail(n);
+    dynamic_vector<T> q1, p1;
+    const step_status st = stepper.try_step(q, p, tau, q1, p1);
+    if (!st) {
+      if (failure) *failure = st;
+      return false;
+    }
+    z1.resize(2 * n);
+    z1 << q1, p1;
+    return true;
+  };
+}
+
+struct row {
+  std::string defect = "nan", max_energy = "nan", drift = "nan", failure, regime = "ok";
+  std::string defect_estimate = "nan", state_estimate = "nan";
+  bool coarse = false;  ///< the long run's estimated error above 1/100 of the solution's size
+};
+
+/// The map, recording the last state it produced (the end of a run through energy_behaviour).
+template <class T>
+analysis::phase_map<T> recording(analysis::phase_map<T> map, analysis::phase_vector<T>& last) {
+  return [map = std::move(map), &last](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
+    if (!map(z, z1)) return false;
+    last = z1;
+    return true;
+  };
+}
+
+template <class T>
+std::string sci(const T& v) {
+  std::ostringstream out;
+  out << std::scientific << std::setprecision(2) << v;
+  return out.str();
+}
+
+template <class T, class List>
+int run(const std::string& program, const selection<List>& sel, const extra_options& x) {
+  const List list;
+  const auto cases = sel.cases();
+  const T tau = parse_number<T>("--tau", x.tau);  // checked finite > 0 by the parser
+  const double long_tau = x.long_tau.empty() ? static_cast<double>(tau) : parse_number<double>("--long-tau", x.long_tau);
+  // Check --q0 / --p0 here: the workers below report failures per case, not usage errors.
+  if (!x.q0.empty() || !x.p0.empty()) {
+    const std::string& system = sel.systems.front();
+    const auto n = static_cast<std::size_t>(with_system(list, system, []<class Sys>() { return Sys::dof; }));
+    for (const auto* v : {&x.q0, &x.p0}) {
+      if (!v->empty() && v->size() != n)
+        throw usage_error("--q0 / --p0 need " + std::to_string(n) + " value(s) for " + system);
+      for (const std::string& s : *v) parse_number<T>("--q0/--p0", s);
+    }
+  }
+  std::vector<row> rows(cases.size());
+  const auto start = std::chrono::steady_clock::now();
+  parallel_for(cases.size(), sel.threads, [&](std::size_t i) {
+    const auto& c = cases[i];
+    try {
+      const auto stepper = make_stepper<T>(list, c.system, c.spec);
+      if (x.monitor) stepper->set_monitor(step_monitor<T>::on());
+      const analysis::phase_vector<T> z0 = initial_state<T>(list, c.system, *stepper, x);
+      step_status failed;
+      analysis::phase_matrix<T> J;
+      analysis::phase_matrix<T> J2;  // with the difference step doubled: the defect's estimate
+      try {
+        J = analysis::one_step_jacobian<T>(as_map<T>(*stepper, tau, &failed), z0);
+        J2 = analysis::one_step_jacobian<T>(as_map<T>(*stepper, tau, &failed), z0,
+                                            T(2) * analysis::default_difference_step<T>());
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error(failed ? std::string(e.what()) : std::string(e.what()) + ": " + failed.message());
+      }
+      const T defect = analysis::symplectic_defect<T>(J);
+      rows[i].defect = sci(defect);
+      {
+        using std::abs;
+        rows[i].defect_estimate = sci(T(abs(T(analysis::symplectic_defect<T>(J2) - defect))));
+      }
+      // A defect of order one is no measurement of symplecticity: the map is outside the
+      // regime where the finite-difference Jacobian means anything (tau far too large).
+      if (!(defect <= T(1))) rows[i].regime = "outside: defect above 1";
+      if (x.long_steps > 0) {
+        const auto fast = make_stepper<double>(list, c.system, c.spec);
+        if (x.monitor) fast->set_monitor(step_monitor<double>::on());
+        const analysis::phase_vector<double> zd = initial_state<double>(list, c.system, *fast, x);
+        const int n = fast->dof();
+        step_status long_failure;
+        const std::function<double(const analysis::phase_vector<double>&)> energy =
+            [&](const analysis::phase_vector<double>& z) {
+              return fast->energy(dynamic_vector<double>(z.head(n)), dynamic_vector<double>(z.tail(n)));
+            };
+        analysis::phase_vector<double> end = zd, end_half = zd;
+        const auto e = analysis::energy_behaviour<double>(recording(as_map<double>(*fast, long_tau, &long_failure), end),
+                                                          energy, zd, long_tau, x.long_steps);
+        if (!e.ok)
+          rows[i].failure = "long run failed after " + std::to_string(e.steps) + " steps: " + long_failure.message();
+        rows[i].max_energy = sci(e.max_error);
+        rows[i].drift = sci(e.drift);
+        if (e.ok) {
+          // The same run at tau/2: Richardson's estimate of the global error at t = N tau,
+          // |z(tau) - z(tau/2)| 2^p / (2^p - 1) <= 2 |z(tau) - z(tau/2)| for every order p >= 1.
+          const auto half = analysis::energy_behaviour<double>(
+              recording(as_map<double>(*fast, long_tau / 2, &long_failure), end_half), energy, zd, long_tau / 2,
+              2 * x.long_steps);
+          if (!half.ok) {
+            rows[i].failure = "the run at tau/2 (error estimate) failed after " + std::to_string(half.steps) +
+                              " steps: " + long_failure.message();
+          } else {
+            const double estimate = 2 * (end - end_half).lpNorm<Eigen::Infinity>();
+            rows[i].state_estimate = sci(estimate);
+            rows[i].coarse = !(estimate <= end_half.lpNorm<Eigen::Infinity>() / 100);
+          }
+        }
+      }
+    } catch (const std::exception& e) {
+      rows[i].failure = e.what();
+    }
+  }, program.c_str());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  int status = 0;
+  const int scheme_w = scheme_column_width(cases);
+  const bool longrun = x.long_steps > 0;
+  if (sel.csv)
+    std::cout << "system,scheme,nodes,m,tau,defect" << (longrun ? ",max_energy_error,energy_drift" : "")
+              << ",regime,defect_estimate" << (longrun ? ",state_error_estimate" : "") << '\n';
+  else
+    std::cout << std::left << std::setw(16) << "system" << std::setw(scheme_w) << "scheme" << std::setw(16) << "nodes"
+              << std::setw(4) << "m" << std::right << std::setw(11) << "defect" << std::setw(11) << "+-"
+              << (longrun ? "   max|H-H0|   dH/dt  err(t_N)" : "") << '\n';
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const auto& c = cases[i];
+    const row& r = rows[i];
+    if (!r.failure.empty()) {
+      std::cerr << program << ": " << c.system << ", " << c.spec.scheme << ": " << r.failure << '\n';
+      status = exit_run_failure;
+    }
+    if (r.failure.empty() && r.regime != "ok") {
+      std::cerr << program << ": " << c.system << ", " << c.spec.scheme << ": result " << r.regime
+                << " (not a finding; reduce --tau)\n";
+      status = exit_run_failure;
+    }
+    if (r.failure.empty() && r.coarse)
+      std::cerr << program << ": " << c.system << ", " << c.spec.scheme << ": coarse long run: the estimated"
+                << " error at t = N tau is " << r.state_estimate << ", above 1/100 of the solution's size\n";
+    if (sel.csv) {
+      std::cout << c.system << ',' << c.spec.scheme << ',' << c.spec.nodes_label() << ','
+                << m_label(c.spec) << ',' << x.tau << ',' << r.defect;
+      if (longrun) std::cout << ',' << r.max_energy << ',' << r.drift;
+      std::cout << ',' << (r.failure.empty() ? r.regime : "failed") << ',' << r.defect_estimate;
+      if (longrun) std::cout << ',' << r.state_estimate;
+    } else {
+      std::cout << std::left << std::setw(16) << c.system << std::setw(scheme_w) << c.spec.scheme << std::setw(16)
+                << c.spec.nodes_label() << std::setw(4) << m_label(c.spec) << std::right
+                << std::setw(11) << r.defect << std::setw(11) << r.defect_estimate;
+      if (longrun) std::cout << std::setw(12) << r.max_energy << std::setw(10) << r.drift << std::setw(10) << r.state_estimate;
+      if (!r.failure.empty()) std::cout << "  FAILED";
+      else if (r.regime != "ok") std::cout << "  OUTSIDE THE REGIME (" << r.regime << ")";
+      else if (r.coarse) std::cout << "  COARSE";
+    }
+    std::cout << '\n';
+  }
+  std::cerr << program << ": " << cases.size() << " case(s), tau = " << x.tau << ", "
+            << std::numeric_limits<T>::digits10 << " digits";
+  if (longrun) std::cerr << ", " << x.long_steps << " long steps of " << long_tau << " in double";
+  std::cerr << "; " << std::fixed << std::setprecision(1) << seconds << " s on " << sel.threads << " thread(s)\n";
+  return status;
+}
+
+}  // namespace symplectic_detail
+
+/// The usage text of a `symplectic` program over the systems `names`.
+inline std::string symplectic_usage(const std::string& program, const std::vector<std::string>& names) {
+  const std::string pad(program.size() + 8, ' ');
+  return "usage: " + program + " [--system S[,S...]|all] [--scheme S[,S...]|all] [--nodes F[,F...]|all]\n" + pad +
+         "[--m M|A..B (2..8)] [--digits 16|50|100] [--tau T] [--q0 a[,b...]] [--p0 a[,b...]]\n" + pad +
+         "[--long-steps N (0..10^9)] [--long-tau T] [--threads K (1..64)] [--csv] [--no-monitor]\n"
+         "The Jacobian J of the one-step map (q, p) -> (q1, p1) at (q0, p0) with step tau, by central\n"
+         "differences with Richardson extrapolation in --digits digit arithmetic (default 50, tau 0.25),\n"
+         "and the defect max |(J^T Omega J - Omega)_ij|: zero up to about eps^(4/5) for a symplectic map.\n"
+         "With --long-steps N also N steps of size --long-tau in double: max |H - H0| and the drift of\n"
+         "H - H0. The rows and columns of geomint-symplectic (docs/guide/your_own_tools.md).\n"
+         + selection_usage(names) +
+         "regime is 'ok', 'failed' or 'outside: ...'; any case not 'ok' makes the exit status 3. The step\n"
+         "monitor is on (--no-monitor turns it off).\n";
+}
+
+/// The `symplectic` program over the systems of `list`; returns the exit status (0, 2 usage, 3
+/// a case failed or outside its regime, 4 output).
+template <class List>
+int symplectic_main(List list, int argc, const char* const* argv, study_tool tool = {}) {
+  using namespace symplectic_detail;
+  if (tool.program.empty()) tool.program = "geomint-symplectic";
+  selection<List> sel(tool, 50);
+  extra_options x;
+  parser cl(tool.program, tool.usage.empty() ? symplectic_usage(tool.program, system_names(list)) : tool.usage);
+  sel.register_flags(cl, {"16", "50", "100"}, tool);
+  cl.value("--tau", [&](const std::string& v) { x.tau = checked_real_text("--tau", v, real_bound::positive); })
+      .value("--long-tau", [&](const std::string& v) { x.long_tau = checked_real_text("--long-tau", v, real_bound::positive); })
+      .value("--q0", [&](const std::string& v) { x.q0 = parse_real_list("--q0", v, real_bound::finite); })
+      .value("--p0", [&](const std::string& v) { x.p0 = parse_real_list("--p0", v, real_bound::finite); })
+      .value("--long-steps", [&](const std::string& v) { x.long_steps = parse_integer<long>("--long-steps", v, 0, 1'000'000'000L); })
+      .toggle("--no-monitor", [&] { x.monitor = false; });
+  if (const auto done = cl.parse(argc, argv)) return *done;
+  try {
+    if ((!x.q0.empty() || !x.p0.empty()) && sel.systems.size() != 1)
+      throw usage_error("--q0 / --p0 need a single --system");
+    sel.check_cases();
+    int status = 0;
+    if (sel.digits == 16) status = run<double>(tool.program, sel, x);
+    else if (sel.digits == 50) status = run<cpp_bin_float_50>(tool.program, sel, x);
+    else status = run<cpp_bin_float_100>(tool.program, sel, x);
+    return finish_stdout(tool.program, status);
+  } catch (const usage_error& e) {
+    return finish_stdout(tool.program, cl.fail(e.what()));
+  } catch (const std::exception& e) {
+    std::cerr << tool.program << ": " << e.what() << '\n';
+    return finish_stdout(tool.program, 1);
+  }
+}
+
+}  // namespace geomint::cli

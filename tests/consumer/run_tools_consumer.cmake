@@ -1,0 +1,45 @@
+# cmake -P script: installs geomint into a prefix, builds the outside project of
+# docs/guide/your_own_tools.md (tools_project: hh-tools over the README's Henon-Heiles system,
+# with geomint_add_tools) and runs its commands. The build is kept small for CI: --digits 16 and
+# 50 only, no m = 9..16 (GEOMINT_TOOLS_DIGITS, GEOMINT_TOOLS_HIGH_M), at -O1.
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "failed (${status}): ${ARGN}\n${out}${err}")
+  endif()
+endfunction()
+# expect(<regex> <command>...): runs the command, which must exit with 0 and print a match.
+function(expect regex)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(REPLACE ";" " " shown "${ARGN}")
+  message("$ ${shown}\n${out}${err}")
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "exit status ${status}")
+  endif()
+  if(NOT "${out}${err}" MATCHES "${regex}")
+    message(FATAL_ERROR "output does not match '${regex}'")
+  endif()
+endfunction()
+file(REMOVE_RECURSE ${PREFIX} ${CONSUMER_BUILD})
+run(${CMAKE_COMMAND} --install ${GEOMINT_BUILD_DIR} --prefix ${PREFIX})
+run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX}
+    -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG"
+    "-DGEOMINT_TOOLS_DIGITS=16;50" -DGEOMINT_TOOLS_HIGH_M=OFF)
+run(${CMAKE_COMMAND} --build ${CONSUMER_BUILD} --parallel 2)
+set(tool ${CONSUMER_BUILD}/hh-tools)
+# Expected values from exact mathematics and the schemes' published orders: the energy of the
+# initial data is exactly 1/8 (q0 = 0, qdot0 = (3/10, 2/5)); the schemes conserve it up to their
+# error at these steps. LPF on Gauss-interior nodes of degree m has order 2(m - 1) (Kong & Yang,
+# J. Dyn. Control 2020), the Galerkin VI of degree m order 2m; both are symplectic for a natural
+# Lagrangian, so their defect in double is at round-off (1e-1x).
+expect("system henon-heiles, scheme lpf.m=2, equispaced.*energy = 0[.]12(49|50)"
+       ${tool} run --system henon-heiles --steps 100)
+expect("system henon-heiles, scheme .*gauss2.*energy = 0[.]12(4999|5000)"
+       ${tool} run --system henon-heiles --tableau ${TABLEAU} --steps 100)
+expect("system henon-heiles, scheme galerkin.m=4.*digits 50.*energy = 0[.]12(49999999999|50000000000)"
+       ${tool} run --system henon-heiles --scheme galerkin --m 4 --digits 50 --steps 100)
+expect("henon-heiles,lpf,gauss-interior,3,[0-9.]+,(3[.]9[0-9]|4[.]0[0-9]),[^,]+,ok"
+       ${tool} order --system henon-heiles --scheme lpf --nodes gauss-interior --m 3 --steps 4,8,16,32,64 --csv)
+expect("henon-heiles,lpf,gauss-interior,3,0[.]25,[0-9.]+e-1[0-9],ok"
+       ${tool} symplectic --digits 16 --system henon-heiles --scheme lpf --nodes gauss-interior --m 3 --csv)
+message("consumer tools: ok")
