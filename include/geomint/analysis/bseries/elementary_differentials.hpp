@@ -1,0 +1,215 @@
+#pragma once
+/// Numerical values of the elementary differentials F(t)(y) of one- and two-colour trees
+/// (trees.hpp) for a vector field given as a functor templated on its scalar, with the field's
+/// own derivatives by automatic differentiation (ad/dual.hpp), in any scalar T (double,
+/// Boost.Multiprecision).
+///
+/// HLW (Hairer, Lubich, Wanner, Geometric Numerical Integration, 2nd ed. 2006), section III.1.2
+/// (one colour): F(single vertex) = f(y), F([t_1, ..., t_m]) = f^(m)(y)[F(t_1), ..., F(t_m)];
+/// section III.2.1 (two colours, y = (y_0, y_1), y_0' = f_0(y), y_1' = f_1(y)): F(t) of a tree
+/// whose root has colour c is the block c of f^(m)(y)[F(t_1), ..., F(t_m)], each F(t_i) being
+/// zero outside the block of its own root's colour; so the derivative in y_0 or y_1 that the
+/// colour of a child asks for is the directional derivative along F(t_i) as a full vector.
+///
+/// The k-th mixed directional derivative f^(k)(y)[u_1, ..., u_k] is the coefficient of
+/// e_1 e_2 ... e_k in f(y + e_1 u_1 + ... + e_k u_k) with k nested dual levels, one direction
+/// each (dual<dual<...<T, 1>...>, 1>): every level differentiates once, exactly, so the result
+/// has no truncation error (only the rounding of T). The cost of one evaluation grows as 3^k.
+///
+/// A field is a type with `static constexpr int dimension` (the length of y),
+/// `static constexpr int colour_split` (the length of the colour-0 block y_0; the whole y for
+/// one colour) and `template <class S> geomint::vec<S, dimension> operator()(const
+/// geomint::vec<S, dimension>& y) const`. Two adapters: natural_field (q' = M^{-1} p,
+/// p' = -grad V(q) from a natural system of mechanics/lagrangian.hpp) and hamiltonian_field
+/// (y' = J^{-1} grad H(y)).
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "geomint/ad/dual.hpp"
+#include "geomint/analysis/bseries/trees.hpp"
+#include "geomint/core/dispatch.hpp"
+#include "geomint/linalg/types.hpp"
+
+namespace geomint::analysis::bseries {
+
+/// The largest derivative order evaluated (a vertex with at most this many children): every
+/// two-colour tree the generator accepts (order 9), one-colour trees up to order 9.
+inline constexpr int max_derivative_order = 8;
+
+namespace detail {
+/// K nested dual levels over T, one direction each.
+template <class T, int K>
+struct nested_dual {
+  using type = dual<typename nested_dual<T, K - 1>::type, 1>;
+};
+template <class T>
+struct nested_dual<T, 0> {
+  using type = T;
+};
+template <class T, int K>
+using nested_dual_t = typename nested_dual<T, K>::type;
+
+/// y + e_1 u[0] + ... + e_K u[K-1] (level k carries the direction u[k-1]).
+template <class T, int K>
+nested_dual_t<T, K> perturbed(const T& y, const T* u) {
+  if constexpr (K == 0) {
+    return y;
+  } else {
+    nested_dual_t<T, K> x(perturbed<T, K - 1>(y, u));
+    x.d[0] = nested_dual_t<T, K - 1>(u[K - 1]);
+    return x;
+  }
+}
+
+/// The coefficient of e_1 ... e_K.
+template <class T, int K>
+T mixed_part(const nested_dual_t<T, K>& x) {
+  if constexpr (K == 0) return x;
+  else return mixed_part<T, K - 1>(x.d[0]);
+}
+
+/// f^(K)(y)[u_1, ..., u_K].
+template <int K, class Field, class T>
+vec<T, Field::dimension> directional_derivative(const Field& f, const vec<T, Field::dimension>& y,
+                                                const std::vector<const vec<T, Field::dimension>*>& u) {
+  constexpr int D = Field::dimension;
+  using S = nested_dual_t<T, K>;
+  vec<S, D> x;
+  for (int i = 0; i < D; ++i) {
+    T directions[K > 0 ? K : 1];
+    for (int k = 0; k < K; ++k) directions[k] = (*u[static_cast<std::size_t>(k)])[i];
+    x[i] = perturbed<T, K>(y[i], directions);
+  }
+  const vec<S, D> fx = f.template operator()<S>(x);
+  vec<T, D> out;
+  for (int i = 0; i < D; ++i) out[i] = mixed_part<T, K>(fx[i]);
+  return out;
+}
+
+/// grad V(q) of a scalar functor V at q in the scalar S, by one dual level of n directions.
+template <int n, class S, class Potential>
+vec<S, n> gradient(const Potential& potential, const vec<S, n>& q) {
+  using G = dual<S, n>;
+  vec<G, n> x;
+  for (int i = 0; i < n; ++i) x[i] = G::variable(q[i], i);
+  const G v = potential(x);
+  vec<S, n> g;
+  for (int i = 0; i < n; ++i) g[i] = v.d[static_cast<std::size_t>(i)];
+  return g;
+}
+}  // namespace detail
+
+/// f^(k)(y)[u_1, ..., u_k], k = u.size() <= max_derivative_order (k = 0: f(y)).
+template <class Field, class T>
+vec<T, Field::dimension> directional_derivative(const Field& f, const vec<T, Field::dimension>& y,
+                                                const std::vector<const vec<T, Field::dimension>*>& u) {
+  if (u.size() > static_cast<std::size_t>(max_derivative_order))
+    throw std::invalid_argument("geomint::analysis::bseries::directional_derivative: derivative order " +
+                                std::to_string(u.size()) + " above " + std::to_string(max_derivative_order));
+  return with_int<0, max_derivative_order>(static_cast<int>(u.size()), [&]<int K>() {
+    return detail::directional_derivative<K>(f, y, u);
+  });
+}
+
+/// F(t)(y) for every tree t of `trees` (the whole vector y; for two colours zero outside the
+/// block of the root's colour). With `wanted` (one entry per tree, closed under taking
+/// subtrees) only the marked trees are evaluated, the others are zero. A tree with a child whose
+/// differential is exactly zero is zero (multilinearity) without evaluation.
+template <class Field, class T>
+std::vector<vec<T, Field::dimension>> elementary_differentials(const tree_set& trees, const Field& f,
+                                                               const vec<T, Field::dimension>& y,
+                                                               const std::vector<bool>* wanted = nullptr) {
+  constexpr int D = Field::dimension;
+  static_assert(Field::colour_split >= 1 && Field::colour_split <= D,
+                "geomint::analysis::bseries: a field's colour_split is the length of the colour-0 block, 1..dimension");
+  if (trees.colours() == 2 && Field::colour_split == D)
+    throw std::invalid_argument("geomint::analysis::bseries::elementary_differentials: two-colour trees need a field with two blocks");
+  if (wanted && wanted->size() != static_cast<std::size_t>(trees.size()))
+    throw std::invalid_argument("geomint::analysis::bseries::elementary_differentials: `wanted` needs one entry per tree");
+  std::vector<vec<T, D>> F(static_cast<std::size_t>(trees.size()), vec<T, D>::Zero());
+  std::vector<bool> zero(static_cast<std::size_t>(trees.size()), true);
+  const vec<T, D> fy = f.template operator()<T>(y);
+  for (int t = 0; t < trees.size(); ++t) {
+    if (wanted && !(*wanted)[static_cast<std::size_t>(t)]) continue;
+    const rooted_tree& tree = trees[t];
+    std::vector<const vec<T, D>*> u;
+    bool vanishes = false;
+    for (int s : tree.subtrees) {
+      vanishes = vanishes || zero[static_cast<std::size_t>(s)];
+      u.push_back(&F[static_cast<std::size_t>(s)]);
+    }
+    if (vanishes) continue;
+    vec<T, D> value = u.empty() ? fy : directional_derivative(f, y, u);
+    if (trees.colours() == 2) {  // keep the block of the root's colour
+      if (tree.colour == 0) value.tail(D - Field::colour_split).setZero();
+      else value.head(Field::colour_split).setZero();
+    }
+    zero[static_cast<std::size_t>(t)] = value.isZero(0);
+    F[static_cast<std::size_t>(t)] = value;
+  }
+  return F;
+}
+
+/// q' = M^{-1} p (colour 0), p' = -grad V(q) (colour 1) for a natural system Sys
+/// (Sys::potential<S>, Sys::mass_matrix<S>: mechanics/lagrangian.hpp), y = (q, p); grad V by
+/// AD, M^{-1} computed once in T.
+template <class Sys, class T>
+struct natural_field {
+  static constexpr int dof = Sys::dof;
+  static constexpr int dimension = 2 * dof;
+  static constexpr int colour_split = dof;
+  mat<T, dof> inverse_mass = Sys::template mass_matrix<T>().inverse();
+
+  template <class S>
+  vec<S, dimension> operator()(const vec<S, dimension>& y) const {
+    const vec<S, dof> q = y.head(dof);
+    const vec<S, dof> grad =
+        detail::gradient<dof, S>([](const auto& x) { return Sys::template potential<typename std::decay_t<decltype(x)>::Scalar>(x); }, q);
+    vec<S, dimension> out;
+    for (int i = 0; i < dof; ++i) {
+      S v(0);
+      for (int j = 0; j < dof; ++j) v += S(inverse_mass(i, j)) * y[dof + j];
+      out[i] = v;
+      out[dof + i] = -grad[i];
+    }
+    return out;
+  }
+};
+
+/// y' = J^{-1} grad H(y), y = (q, p) with n = dimension / 2: q' = H_p, p' = -H_q; H a functor
+/// templated on its scalar, `template <class S> S operator()(const geomint::vec<S, 2n>& y) const`.
+/// Colour 0 is q, colour 1 is p.
+template <class Hamiltonian, int n>
+struct hamiltonian_field {
+  static constexpr int dimension = 2 * n;
+  static constexpr int colour_split = n;
+  Hamiltonian hamiltonian{};
+
+  template <class S>
+  vec<S, dimension> operator()(const vec<S, dimension>& y) const {
+    const vec<S, dimension> g = detail::gradient<dimension, S>(
+        [this](const auto& x) { return hamiltonian.template operator()<typename std::decay_t<decltype(x)>::Scalar>(x); }, y);
+    vec<S, dimension> out;
+    for (int i = 0; i < n; ++i) {
+      out[i] = g[n + i];
+      out[n + i] = -g[i];
+    }
+    return out;
+  }
+};
+
+/// omega(u, v) = u_q . v_p - u_p . v_q on y = (q, p) (the first `n` entries are q). For a
+/// Hamiltonian field f = J^{-1} grad H: grad H(y) . v = omega(f(y), v).
+template <class T, int D>
+T symplectic_pairing(const vec<T, D>& u, const vec<T, D>& v) {
+  constexpr int n = D / 2;
+  T s(0);
+  for (int i = 0; i < n; ++i) s += u[i] * v[n + i] - u[n + i] * v[i];
+  return s;
+}
+
+}  // namespace geomint::analysis::bseries
