@@ -42,4 +42,31 @@ expect("henon-heiles,lpf,gauss-interior,3,[0-9.]+,(3[.]9[0-9]|4[.]0[0-9]),[^,]+,
        ${tool} order --system henon-heiles --scheme lpf --nodes gauss-interior --m 3 --steps 4,8,16,32,64 --csv)
 expect("henon-heiles,lpf,gauss-interior,3,0[.]25,[0-9.]+e-1[0-9],ok"
        ${tool} symplectic --digits 16 --system henon-heiles --scheme lpf --nodes gauss-interior --m 3 --csv)
+# modified: the energy error of the Galerkin VI m = 2 (order 4, symplectic) predicted from its
+# modified equation (backward error analysis: H(y_n) - H(y_0) = -h^4 (H_5(y_n) - H_5(y_0)) +
+# O(h^6)) against the measured one, two independent routes; within 2% at tau = 1/20.
+execute_process(COMMAND ${tool} modified --scheme galerkin --m 2 --system henon-heiles --tau 0.1,0.05 --steps 400 --csv
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0 OR NOT out MATCHES "\n0[.]05,400,([0-9])[.]([0-9][0-9][0-9])[0-9]*e-0*([0-9]+),([0-9])[.]([0-9][0-9][0-9])[0-9]*e-0*([0-9]+)")
+  message(FATAL_ERROR "hh-tools modified: status ${status}\n${out}${err}")
+endif()
+# The two values as integers of four digits at the same exponent.
+set(predicted "${CMAKE_MATCH_1}${CMAKE_MATCH_2}")
+set(measured "${CMAKE_MATCH_4}${CMAKE_MATCH_5}")
+math(EXPR shift "${CMAKE_MATCH_6} - ${CMAKE_MATCH_3}")
+if(shift EQUAL 1)
+  math(EXPR measured "${measured} / 10")
+elseif(shift EQUAL -1)
+  math(EXPR predicted "${predicted} / 10")
+elseif(NOT shift EQUAL 0)
+  message(FATAL_ERROR "hh-tools modified: predicted and measured differ by a factor 10^${shift}:\n${out}")
+endif()
+math(EXPR deviation "100 * (${predicted} - ${measured})")
+if(deviation LESS 0)
+  math(EXPR deviation "-${deviation}")
+endif()
+math(EXPR allowed "2 * ${measured}")
+if(deviation GREATER allowed)
+  message(FATAL_ERROR "hh-tools modified: prediction and measurement differ by more than 2%:\n${out}")
+endif()
 message("consumer tools: ok")

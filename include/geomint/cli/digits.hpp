@@ -24,7 +24,7 @@ constexpr int digits_of() {
   return std::is_same_v<T, double> ? 16 : std::numeric_limits<T>::digits10;
 }
 
-/// f.template operator()<D>() for the run-time digits D (16, 50, or else 100; the command-line
+/// `f.template operator()<D>()` for the run-time digits D (16, 50, or else 100; the command-line
 /// parser has already checked it).
 template <class F>
 decltype(auto) with_digits(int digits, F&& f) {

@@ -6,16 +6,19 @@
 ///     mytool run --system henon-heiles --scheme galerkin --m 4 --digits 50
 ///     mytool order --digits 16 --system henon-heiles --scheme lpf --nodes gauss-interior --m 2..4
 ///     mytool symplectic --system henon-heiles --digits 16
+///     mytool modified --scheme galerkin --m 2 --system henon-heiles --tau 0.1,0.05 --steps 400
 ///
 /// Each command has the options of the project's program of that name (geomint-run,
-/// geomint-order, geomint-symplectic); `mytool <command> --help` prints them. A command is one
-/// entry of `commands` (a front end over a system_list: run_main, order_main, symplectic_main).
+/// geomint-order, geomint-symplectic, geomint-modified); `mytool <command> --help` prints them. A
+/// command is one entry of `commands` (a front end over a system_list: run_main, order_main,
+/// symplectic_main, modified_main).
 #include <filesystem>
 #include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "geomint/cli/modified.hpp"
 #include "geomint/cli/order.hpp"
 #include "geomint/cli/parser.hpp"
 #include "geomint/cli/run.hpp"
@@ -53,6 +56,12 @@ std::vector<command> commands(List list) {
          study_tool tool;
          tool.program = program;
          return symplectic_main(list, argc, argv, tool);
+       }},
+      {"modified", "the modified equation of a method and its predicted energy error (geomint-modified)",
+       [list](int argc, const char* const* argv, const std::string& program) {
+         study_tool tool;
+         tool.program = program;
+         return modified_main(list, argc, argv, tool);
        }},
   };
 }

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <utility>
 #include <stdexcept>
+#include <sstream>
 #include <string>
 #include <mutex>
 #include <thread>
@@ -30,6 +31,17 @@ struct study_tool {
   int default_digits = 0;
   std::vector<std::pair<std::string, std::vector<std::string>>> groups;
 };
+
+/// A number already checked by the parser (parser.hpp), read in the scalar T at full precision.
+template <class T>
+T parse_number(const std::string& flag, const std::string& s) {
+  std::istringstream in(s);
+  T v;
+  in >> v;
+  if (in.fail() || !in.eof() || !geomint::is_finite(v))
+    throw usage_error(flag + " expects a finite number, got '" + s + "'");
+  return v;
+}
 
 /// One study case: a system and a scheme.
 struct study_case {

@@ -26,17 +26,6 @@ struct extra_options {
   bool monitor = true;
 };
 
-/// A number already checked by the parser (cli.hpp), read in the scalar T at full precision.
-template <class T>
-T parse_number(const std::string& flag, const std::string& s) {
-  std::istringstream in(s);
-  T v;
-  in >> v;
-  if (in.fail() || !in.eof() || !geomint::is_finite(v))
-    throw usage_error(flag + " expects a finite number, got '" + s + "'");
-  return v;
-}
-
 /// The initial state (q0, p0) of a case in the scalar T (default_initial_state: --p0 or
 /// the default velocity's momentum at q0).
 template <class T, class List>

@@ -63,7 +63,7 @@ decltype(auto) with_system_from(std::string_view name, F& f, const std::vector<s
 }
 }  // namespace detail
 
-/// f.template operator()<Sys>() for the system of the list called `name`; std::invalid_argument
+/// `f.template operator()<Sys>()` for the system of the list called `name`; std::invalid_argument
 /// (listing the names) otherwise.
 template <class... Sys, class F>
 decltype(auto) with_system(system_list<Sys...> list, std::string_view name, F&& f) {

@@ -20,7 +20,7 @@
 ///
 /// The nodes of s = 2..5 lie in Q or in a quadratic field Q(sqrt d) for every family but Gauss
 /// and Radau with s = 4, 5 (their nodes generate fields of degree 8 and more; not here; the
-/// Gauss methods of any s as RKN tableaux are galerkin_tableau<s> of analysis/rkn_tableau.hpp).
+/// Gauss methods of any s as RKN tableaux are `galerkin_tableau<s>` of analysis/rkn_tableau.hpp).
 /// The coefficients are field_element over that one field (methods/number_field.hpp), solved
 /// from the conditions above in exact arithmetic.
 

@@ -155,7 +155,7 @@ std::vector<vec<T, Field::dimension>> elementary_differentials(const tree_set& t
 }
 
 /// q' = M^{-1} p (colour 0), p' = -grad V(q) (colour 1) for a natural system Sys
-/// (Sys::potential<S>, Sys::mass_matrix<S>: mechanics/lagrangian.hpp), y = (q, p); grad V by
+/// (`Sys::potential<S>`, `Sys::mass_matrix<S>`: mechanics/lagrangian.hpp), y = (q, p); grad V by
 /// AD, M^{-1} computed once in T.
 template <class Sys, class T>
 struct natural_field {
