@@ -34,7 +34,7 @@ set(tool ${CONSUMER_BUILD}/hh-tools)
 # Lagrangian, so their defect in double is at round-off (1e-1x).
 expect("system henon-heiles, scheme lpf.m=2, equispaced.*energy = 0[.]12(49|50)"
        ${tool} run --system henon-heiles --steps 100)
-expect("system henon-heiles, scheme .*gauss2.*energy = 0[.]12(4999|5000)"
+expect("system henon-heiles, scheme gauss-2 .rkn, 2 stages.*energy = 0[.]12(4999|5000)"
        ${tool} run --system henon-heiles --tableau ${TABLEAU} --steps 100)
 expect("system henon-heiles, scheme galerkin.m=4.*digits 50.*energy = 0[.]12(49999999999|50000000000)"
        ${tool} run --system henon-heiles --scheme galerkin --m 4 --digits 50 --steps 100)
