@@ -22,9 +22,14 @@ function(expect regex)
 endfunction()
 file(REMOVE_RECURSE ${PREFIX} ${CONSUMER_BUILD})
 run(${CMAKE_COMMAND} --install ${GEOMINT_BUILD_DIR} --prefix ${PREFIX})
-run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX}
-    -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG"
-    "-DGEOMINT_TOOLS_DIGITS=16;50" -DGEOMINT_TOOLS_HIGH_M=OFF)
+# (Not through run(): its ${ARGN} would split the list 16;50 into two arguments.)
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX}
+                        -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG"
+                        "-DGEOMINT_TOOLS_DIGITS=16;50" -DGEOMINT_TOOLS_HIGH_M=OFF
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "configuring the outside project failed (${status}):\n${out}${err}")
+endif()
 run(${CMAKE_COMMAND} --build ${CONSUMER_BUILD} --parallel 2)
 set(tool ${CONSUMER_BUILD}/hh-tools)
 # Expected values from exact mathematics and the schemes' published orders: the energy of the
