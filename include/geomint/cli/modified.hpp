@@ -26,6 +26,7 @@
 #include "geomint/analysis/scheme_structure.hpp"
 #include "geomint/methods/coefficients.hpp"
 #include "geomint/methods/tableau_file.hpp"
+#include "geomint/cli/progress.hpp"
 #include "geomint/cli/study.hpp"
 
 namespace geomint::cli {
@@ -252,8 +253,9 @@ T slope(const std::vector<T>& t, const std::vector<T>& e) {
   return sxy / sxx;
 }
 
+/// One run at `tau`; its steps advance `bar` from `done` on (the progress line of a terminal).
 template <class Sys, class T, class List>
-row<T> run_case(List list, const options& o, const method_series& m, const T& tau) {
+row<T> run_case(List list, const options& o, const method_series& m, const T& tau, progress& bar, std::size_t done) {
   row<T> r;
   constexpr int n = Sys::dof;
   const auto stepper = o.scheme.empty()
@@ -279,6 +281,7 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
     times.push_back(T(k) * tau);
     errors.push_back(T(stepper->energy(q, p) - h0));
     if (k == o.steps) break;
+    if (k % 1024 == 0) bar.set(done + static_cast<std::size_t>(k));  // (a terminal only)
     const step_status st = stepper->try_step(q, p, tau, q1, p1);
     if (!st) {
       r.failure = "step " + std::to_string(k) + " failed: " + st.message();
@@ -337,11 +340,17 @@ int run(List list, const options& o, const method_series& m) {
                   << " term(s), " << o.digits << " digits)\n"
                   << std::setw(12) << "tau" << std::setw(10) << "steps" << std::setw(16) << "predicted" << std::setw(16)
                   << "measured" << std::setw(12) << "ratio" << '\n';
+      // The steps of every tau, counted by the progress line; the messages of the runs are held
+      // until it is erased.
+      progress bar(o.program, o.tau.size() * static_cast<std::size_t>(o.steps), "steps");
+      std::ostringstream messages;
+      std::size_t done = 0;
       for (const std::string& text : o.tau) {
         const T tau = parse_number<T>("--tau", text);
-        const row<T> r = run_case<Sys, T>(list, o, m, tau);
+        const row<T> r = run_case<Sys, T>(list, o, m, tau, bar, done);
+        done += static_cast<std::size_t>(o.steps);
         if (!r.failure.empty()) {
-          std::cerr << o.program << ": tau = " << text << ": " << r.failure << '\n';
+          messages << o.program << ": tau = " << text << ": " << r.failure << '\n';
           status = cli::exit_run_failure;
         }
         // A failed run is no measurement: its row says nan.
@@ -356,8 +365,10 @@ int run(List list, const options& o, const method_series& m) {
                     << std::setw(12) << (ok ? ratio.str() : "nan") << '\n';
         }
         if (m.symplectic)
-          std::cerr << o.program << ": tau = " << text << ": quadrature error estimate " << sci(r.quadrature) << '\n';
+          messages << o.program << ": tau = " << text << ": quadrature error estimate " << sci(r.quadrature) << '\n';
       }
+      bar.finish();
+      std::cerr << messages.str();
       return status;
     }
   });
