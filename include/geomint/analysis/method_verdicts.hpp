@@ -32,8 +32,10 @@
 ///   determinants of linear_stability.hpp evaluated over K at z = 0..S and interpolated, then
 ///   that header's exact analysis (periodicity where det M = 1, else absolute stability,
 ///   dissipation, phase lag). Needs sum b = 1, rational polynomials and S <= 8
-///   (std::domain_error naming which fails).
-/// - `verdicts(t)` (run time): all of them, with the stability verdict of the CSV column
+///   (std::domain_error naming which fails); over Q(r) `field_linear_stability(t)` (run time, any
+///   S) is the same analysis for irrational polynomials (field_stability.hpp).
+/// - `verdicts(t)` (run time): all of them (over field_element: the field path where the rational
+///   one does not decide: field_oscillator, field_rk), with the stability verdict of the CSV column
 ///   `stability`: rk `a-stable` when A-stable (rk_stability.hpp; also when L-stable, see
 ///   `l_stable`), else the kind of its imaginary-axis interval; prk, rkn, nystrom `periodic`
 ///   (det M = 1) or `absolute`; `none` for an empty interval.

@@ -12,8 +12,9 @@
 ///   time for methods::tableau_data<K> (exact_rational, field_element of methods/number_field.hpp).
 /// - `rk_stability(t)` (or of a `rational_function`): the exact verdicts on R in lowest terms in
 ///   Z[z]. Constexpr; R's coefficients must be rational (a field_element R with an irrational
-///   coefficient is a std::domain_error naming it; the Q(r) tableaux of the literature, Gauss and
-///   Radau with sqrt 3, sqrt 6, sqrt 15, have rational R) and S <= max_exact_stages:
+///   coefficient is a std::domain_error naming it: `field_rk_stability` of field_stability.hpp
+///   decides it at run time; the Q(r) tableaux of the literature, Gauss and Radau with sqrt 3,
+///   sqrt 6, sqrt 15, have rational R) and S <= max_exact_stages:
 ///   - bounded on the imaginary axis: E(y) = |Q(iy)|^2 - |P(iy)|^2 = e(y^2) >= 0 for every real
 ///     y, i.e. e(u) >= 0 for u >= 0. e(0) = 0; e / u^k must be positive at 0 and have no
 ///     positive root of odd multiplicity (Sturm sequences and exact bisection of
