@@ -365,38 +365,22 @@ method_verdicts verdicts(const methods::tableau_data<K>& t) {
   v.permutation = symmetry_permutation(t);
   v.symmetric = v.permutation.found;
   v.stage_order = stage_order(t);
-  constexpr bool over_field = std::is_same_v<K, methods::field_element>;
-  try {
-    v.oscillator = linear_stability(t);
-    v.has_oscillator = true;
-  } catch (const std::exception& e) {  // irrational polynomials, more than 8 stages, sum b != 1
-    v.oscillator_reason = e.what();
-    if constexpr (over_field) {
-      try {
-        v.field_oscillator = field_linear_stability(t);
-        v.oscillator_in_field = true;
-        v.oscillator_reason.clear();
-      } catch (const std::exception& field_error) {
-        v.oscillator_reason = field_error.what();
-      }
-    }
-  }
-  if (t.kind == methods::method_kind::rk) {
+  // result = compute() and decided = true, or the reason it could not be decided.
+  auto attempt = [](auto compute, auto& result, bool& decided, std::string& reason) {
     try {
-      v.rk = rk_stability(t);
-      v.has_rk = true;
-    } catch (const std::exception& e) {
-      v.rk_reason = e.what();
-      if constexpr (over_field) {
-        try {
-          v.field_rk = field_rk_stability(t);
-          v.rk_in_field = true;
-          v.rk_reason.clear();
-        } catch (const std::exception& field_error) {
-          v.rk_reason = field_error.what();
-        }
-      }
+      result = compute();
+      decided = true;
+      reason.clear();
+    } catch (const std::exception& e) {  // irrational polynomials, more than 8 stages, sum b != 1
+      reason = e.what();
     }
+  };
+  attempt([&] { return linear_stability(t); }, v.oscillator, v.has_oscillator, v.oscillator_reason);
+  if (t.kind == methods::method_kind::rk) attempt([&] { return rk_stability(t); }, v.rk, v.has_rk, v.rk_reason);
+  if constexpr (std::is_same_v<K, methods::field_element>) {  // where the rational path did not decide
+    if (!v.has_oscillator) attempt([&] { return field_linear_stability(t); }, v.field_oscillator, v.oscillator_in_field, v.oscillator_reason);
+    if (t.kind == methods::method_kind::rk && !v.has_rk)
+      attempt([&] { return field_rk_stability(t); }, v.field_rk, v.rk_in_field, v.rk_reason);
   }
   if (v.has_rk || v.rk_in_field) {
     v.has_stability = true;
