@@ -245,4 +245,20 @@ TEST_CASE("SDIRK of order 3 over Q(sqrt 3): A-stable for gamma = (3 + sqrt 3)/6 
   CHECK(vp.field_rk.denominator[2] == (field_element(2) + r) / field_element(6));
 }
 
+TEST_CASE("An explicit rk method over Q(sqrt 2): its finite imaginary-axis interval from |R(iy)|^2", "[field_stability]") {
+  // a_21 = sqrt 2, b = (1/2, 1/2): R(z) = 1 + z + g z^2 with g = b_2 a_21 = sqrt 2 / 2 (the
+  // stability function of an explicit method, HW II section IV.2). |R(iy)|^2 = (1 - g y^2)^2 + y^2
+  // = 1 - (2 g - 1) y^2 + g^2 y^4 <= 1 exactly for y^2 <= (2 g - 1) / g^2 = 2 sqrt 2 - 2.
+  const auto t = tableau_from("kind rk\nstages 2\nfield r^2-2\nc 0 r\na 0 0 r 0\nb 1/2 1/2\n");
+  const method_verdicts v = verdicts(t);
+  REQUIRE(v.rk_in_field);
+  CHECK_FALSE(v.field_rk.a_stable);
+  CHECK(v.stability == stability_verdict::absolute);
+  REQUIRE_FALSE(v.interval.unbounded);
+  REQUIRE_FALSE(v.interval.empty);
+  using std::abs;
+  using std::sqrt;
+  CHECK(abs(interval_end(v.interval) - sqrt(2 * sqrt(T(2)) - 2)) < T(1) / T("1e40"));
+}
+
 }  // namespace field_stability_test
