@@ -52,12 +52,16 @@ names=$("$tool" --list-methods | tail -n +2 | cut -d, -f1)
   echo "holds); symplecticity, symmetry up to a permutation of the stages and stage order exactly; the"
   echo "stability of rk methods on y' = lambda y (\"a-stable\": A-stable, interval = the imaginary-axis"
   echo "interval), of the others on y'' = -y (periodic where det M = 1, else absolute: spectral radius"
-  echo "at most 1, \"none\" for an empty interval, with the dissipation order). \"-\": not decided for"
-  echo "coefficients in Q(r) with r irrational (the compositions over Q(2^(1/3)), Q(4^(1/3)))."
+  echo "at most 1, \"none\" for an empty interval, with the dissipation order), exactly also for"
+  echo "coefficients in Q(r) (the compositions over Q(2^(1/3)); include/geomint/analysis/field_stability.hpp);"
+  echo "error constant C = 2-norm of the exact h^(p+1) coefficients over the trees of order p + 1 of the"
+  echo "method's class (rk: rooted trees, one component; prk: bi-coloured trees; rkn, nystrom: the"
+  echo "Nystrom trees, C^2 = C_q^2 + C_p^2 as for the schemes above), 4 digits, \"-\" when the order is a"
+  echo "lower bound (the per-component constants: \`geomint-scheme --analyse --scheme NAME\`)."
   echo
-  echo "| method | kind | stages | order | stage order | symplectic | symmetric | stability | interval | phase-lag order | dissipation order |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|"
-  tail -n +2 "$out/schemes/catalogue.csv" | awk -F, '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1,$11,$4,$5,$12,$6,$7,$13,$9,$10,$14}'
+  echo "| method | kind | stages | order | stage order | symplectic | symmetric | error constant | stability | interval | phase-lag order | dissipation order |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+  tail -n +2 "$out/schemes/catalogue.csv" | awk -F, '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1,$11,$4,$5,$12,$6,$7,$8,$13,$9,$10,$14}'
   echo
   echo "## Classes of Lagrangians"
   echo

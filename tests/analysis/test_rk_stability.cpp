@@ -254,12 +254,14 @@ TEST_CASE("prk, rkn and nystrom tableaux: symmetry up to stage permutation, stag
   CHECK(vs.permutation.sigma[1] == 0);
 }
 
-TEST_CASE("Irrational stability polynomials are reported, not guessed", "[rk_stability]") {
+TEST_CASE("Irrational stability polynomials are decided over Q(r), not by the rational path", "[rk_stability]") {
   const auto t = methods::read_tableau_file(std::string(GEOMINT_SOURCE_DIR) + "/examples/tableaux/forest_ruth.tableau");
   const method_verdicts v = verdicts(t);
   CHECK(v.symmetric);  // Forest & Ruth, Physica D 43 (1990): a symmetric composition
-  CHECK_FALSE(v.has_stability);
-  CHECK(v.oscillator_reason.find("not rational") != std::string::npos);
+  CHECK_FALSE(v.has_oscillator);  // the constexpr rational analysis refuses Q(2^(1/3))
+  CHECK(v.oscillator_in_field);   // field_stability.hpp decides it (tests/analysis/test_field_stability.cpp)
+  CHECK(v.has_stability);
+  CHECK(v.stability == stability_verdict::periodic);
 }
 
 }  // namespace rk_stability_test

@@ -1,7 +1,8 @@
 # geomint-scheme --analyse --tableau FILE (include/geomint/analysis/bseries/method_analysis.hpp,
 # analysis/method_verdicts.hpp, analysis/rk_stability.hpp): the exact order, symplecticity,
-# symmetry, stage order and linear stability of a tableau file in the --analyse CSV columns ('-'
-# for the error constant, and for the stability columns where the exact analysis does not decide);
+# symmetry, stage order, principal error constant (analysis/bseries/error_constants.hpp) and
+# linear stability (over Q and Q(r): analysis/field_stability.hpp) of a tableau file in the
+# --analyse CSV columns;
 # --print-tableau prints a built-in scheme's tableau; --tableau without a file, or with the
 # built-in scheme's flags, and a bad file exit 2. Included from CMakeLists.txt.
 set(_tableaux ${PROJECT_SOURCE_DIR}/examples/tableaux)
@@ -18,10 +19,17 @@ set(_test_tableaux ${PROJECT_SOURCE_DIR}/tests/analysis/tableaux)
 # (the stage equations solved exactly by hand or any computer algebra system, and the built-in
 # lpf gauss-interior m = 3, the same map, prints the same); stage order 3 = s + 1 (collocation).
 # Forest-Ruth: stage order 2 (exact for constant forces, as each Stormer-Verlet step); its step
-# matrix has coefficients in Q(2^(1/3)), so the exact stability analysis does not decide: '-'.
-set(_tableau_cases "${_tableaux}/stormer_verlet|stormer-verlet,-,-,2,2,yes,yes,-,2,2,rkn,2,periodic,inf"
-                  "${_tableaux}/gauss2|gauss-2,-,-,2,4,yes,yes,-,3,4,rkn,3,periodic,inf"
-                  "${_tableaux}/forest_ruth|forest-ruth,-,-,4,4,yes,yes,-,-,-,rkn,2,-,-")
+# matrix has coefficients in Q(2^(1/3)): interval of periodicity up to tau* = 1.5734019474...
+# (the first tau with |tr M| > 2 of the product of its Stormer-Verlet matrices, computed in 50
+# digits by tests/analysis/test_field_stability.cpp), phase-lag order 4 (order 4, det M = 1).
+# Error constants (C = sqrt(C_q^2 + C_p^2) to 4 digits): Stormer-Verlet C^2 = 1/36 + 1/72 = 1/24
+# from its Taylor expansion (tests/analysis/test_bseries_error_constants.cpp), C = 2.041e-01;
+# Gauss s = 2 as the collocation RKN method: the library's lpf gauss-interior m = 3 (the same
+# map, above) has C = 4.076e-03 (geomint-scheme --analyse --nodes gauss-interior --m 3); the
+# others are checked in that test file, here only their format.
+set(_tableau_cases "${_tableaux}/stormer_verlet|stormer-verlet,-,-,2,2,yes,yes,2[.]041e-01,2,2,rkn,2,periodic,inf"
+                  "${_tableaux}/gauss2|gauss-2,-,-,2,4,yes,yes,4[.]076e-03,3,4,rkn,3,periodic,inf"
+                  "${_tableaux}/forest_ruth|forest-ruth,-,-,4,4,yes,yes,[0-9][.][0-9][0-9][0-9]e-0[0-9],1[.]57340194743454005662957944196,4,rkn,2,periodic,inf")
 # Classical RK4: order 4 (Hairer, Norsett & Wanner, Solving ODEs I, section II.1), not
 # symplectic (b_1 a_11 + b_1 a_11 = 0 != b_1^2; HLW Theorem VI.4.3), not symmetric; stage order
 # 1 (a_21 c_1 = 0 != c_2^2 / 2). R(iy) = 1 - y^2/2 + y^4/24 + i (y - y^3/6), |R(iy)|^2 = 1 - y^6/72
@@ -39,10 +47,10 @@ file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/rk4.tableau
      "kind rk\nstages 4\nname rk4\nc 0 1/2 1/2 1\na 0 0 0 0  1/2 0 0 0  0 1/2 0 0  0 0 1 0\nb 1/6 1/3 1/3 1/6\n")
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/nystrom4.tableau
      "kind rkn\nstages 4\nname nystrom-4\nc 0 1/2 1/2 1\na 0 0 0 0  1/8 0 0 0  1/8 0 0 0  0 0 1/2 0\nbbar 1/6 1/6 1/6 0\nb 1/6 1/3 1/3 1/6\n")
-geomint_cli_test(geomint_cli_scheme_analyse_tableau_rk4 zero "${_header}.rk4,-,-,4,4,no,no,-,2[.]82842712474619009760337744842,4,rk,1,absolute,5"
+geomint_cli_test(geomint_cli_scheme_analyse_tableau_rk4 zero "${_header}.rk4,-,-,4,4,no,no,[0-9][.][0-9][0-9][0-9]e-0[0-9],2[.]82842712474619009760337744842,4,rk,1,absolute,5"
                  $<TARGET_FILE:geomint-scheme> --analyse --tableau ${CMAKE_CURRENT_BINARY_DIR}/rk4.tableau --csv)
 geomint_cli_test(geomint_cli_scheme_analyse_tableau_nystrom4 zero
-                 "${_header}.nystrom-4,-,-,4,4,no,no,-,2[.]58651889451956154854055275834,4,rkn,2,absolute,5"
+                 "${_header}.nystrom-4,-,-,4,4,no,no,[0-9][.][0-9][0-9][0-9]e-0[0-9],2[.]58651889451956154854055275834,4,rkn,2,absolute,5"
                  $<TARGET_FILE:geomint-scheme> --analyse --tableau ${CMAKE_CURRENT_BINARY_DIR}/nystrom4.tableau --csv)
 # Every kind over Q(r) (tests/analysis/tableaux): Gauss s = 3 (Q(sqrt 15)) order 6, symplectic,
 # symmetric, stage order 3, R the Pade approximant R_33: A-stable, |R(iy)| = 1 (det M = 1),
@@ -55,10 +63,10 @@ geomint_cli_test(geomint_cli_scheme_analyse_tableau_nystrom4 zero
 # |tr M| <= 2 up to tau^2 = 8 (2 + tr M = (tau^2 - 8)(tau^2 - 12) / (tau^2 + 24)), phase lag
 # -tau^5 / 2880: order 4. The implicit midpoint rule as a nystrom tableau: order 2, symplectic,
 # symmetric, stage order 1, tr M = 2 (4 - tau^2) / (4 + tau^2), |tr M| <= 2 for every tau.
-list(APPEND _tableau_cases "${_test_tableaux}/gauss3_rk|gauss-3-rk,-,-,3,6,yes,yes,-,inf,6,rk,3,a-stable,inf"
-     "${_test_tableaux}/radau_iia3|radau-iia-3,-,-,3,5,no,no,-,inf,6,rk,3,a-stable,5"
-     "${_test_tableaux}/lobatto_iiia_iiib3|lobatto-iiia-iiib-3,-,-,3,4,yes,yes,-,2[.]82842712474619009760337744842,4,prk,1,periodic,inf"
-     "${_test_tableaux}/midpoint_nystrom|midpoint-nystrom,-,-,1,2,yes,yes,-,inf,2,nystrom,1,periodic,inf")
+list(APPEND _tableau_cases "${_test_tableaux}/gauss3_rk|gauss-3-rk,-,-,3,6,yes,yes,[0-9][.][0-9][0-9][0-9]e-0[0-9],inf,6,rk,3,a-stable,inf"
+     "${_test_tableaux}/radau_iia3|radau-iia-3,-,-,3,5,no,no,[0-9][.][0-9][0-9][0-9]e-0[0-9],inf,6,rk,3,a-stable,5"
+     "${_test_tableaux}/lobatto_iiia_iiib3|lobatto-iiia-iiib-3,-,-,3,4,yes,yes,[0-9][.][0-9][0-9][0-9]e-0[0-9],2[.]82842712474619009760337744842,4,prk,1,periodic,inf"
+     "${_test_tableaux}/midpoint_nystrom|midpoint-nystrom,-,-,1,2,yes,yes,[0-9][.][0-9][0-9][0-9]e-0[0-9],inf,2,nystrom,1,periodic,inf")
 foreach(_case IN LISTS _tableau_cases)
   string(REPLACE "|" ";" _parts "${_case}")
   list(GET _parts 0 _file)

@@ -13,16 +13,21 @@ set(_header "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,sta
 # and Radau (R - e^z = C z^(p+1) with z^6 real on the imaginary axis) and 4 for IIIC. RKN6(4)6FM
 # is explicit with det M(tau) > 1 for every tau > 0 (e.g. det M - 1 = 6.7e-10 at tau = 1/2,
 # 8.1e-5 at tau = 2, computed exactly from the printed tableau), so its interval of absolute
-# stability is empty. Suzuki's composition has coefficients in Q(4^(1/3)): stability not decided.
-foreach(_case "gauss-3,-,-,3,6,yes,yes,-,inf,6,rk,3,a-stable,inf" "radau-iia-3,-,-,3,5,no,no,-,inf,6,rk,3,a-stable,5"
-              "lobatto-iiic-3,-,-,3,4,no,no,-,inf,4,rk,2,a-stable,5" "demp-rkn64,-,-,6,6,no,no,-,0,6,rkn,2,none,7"
-              "suzuki-4,-,-,10,4,yes,yes,-,-,-,rkn,2,-,-")
+# stability is empty. Suzuki's composition has coefficients in Q(4^(1/3)) = Q(2^(1/3)): det M = 1,
+# interval of periodicity up to tau* = 2.7209745385... (the first tau with |tr M| > 2 of the
+# product of its five Stormer-Verlet matrices, computed in 50 digits by
+# tests/analysis/test_field_stability.cpp), phase-lag order 4. Error constants: their format here
+# (C to 4 digits); their values are checked in tests/analysis/test_bseries_error_constants.cpp.
+set(_c "[0-9][.][0-9][0-9][0-9]e-0[0-9]")
+foreach(_case "gauss-3,-,-,3,6,yes,yes,${_c},inf,6,rk,3,a-stable,inf" "radau-iia-3,-,-,3,5,no,no,${_c},inf,6,rk,3,a-stable,5"
+              "lobatto-iiic-3,-,-,3,4,no,no,${_c},inf,4,rk,2,a-stable,5" "demp-rkn64,-,-,6,6,no,no,${_c},0,6,rkn,2,none,7"
+              "suzuki-4,-,-,10,4,yes,yes,${_c},2[.]72097453856014969076597167175,4,rkn,2,periodic,inf")
   string(REGEX MATCH "^[^,]+" _name "${_case}")
   geomint_cli_test(geomint_cli_scheme_catalogue_${_name} zero "${_header}.${_case}"
                    $<TARGET_FILE:geomint-scheme> --analyse --scheme ${_name} --csv)
 endforeach()
 geomint_cli_test(geomint_cli_scheme_catalogue_text zero
-                 "catalogue method forest-ruth .Forest-Ruth; Forest & Ruth 1990.: forest-ruth .rkn, 3 stages.*order 4 .*symplectic: yes"
+                 "catalogue method forest-ruth .Forest-Ruth; Forest & Ruth 1990.: forest-ruth .rkn, 3 stages.*order 4 .*symplectic: yes.*principal error constant C = [0-9.e-]+ .position C_q = [0-9.e-]+, velocity C_p = [0-9.e-]+. at order 5.*interval of periodicity tau. = 1[.]57340194743454005662957944196; phase-lag order 4"
                  $<TARGET_FILE:geomint-scheme> --analyse --scheme forest-ruth)
 # --print-tableau: a tableau file (Gauss s = 3: c = 1/2 -+ sqrt 15/10, b = (5, 8, 5)/18;
 # Hairer & Wanner II, section IV.5), read back with the same analysis.

@@ -89,3 +89,26 @@ TEMPLATE_TEST_CASE("number field: r in every scalar at its full precision", "[me
   const T value = (T(3) - expected) / T(6);
   CHECK(abs(T(x.to<T>() - value)) <= eps_tol<T>(4) * (T(3) + expected) / T(6));
 }
+
+TEST_CASE("number field: exact signs of elements close to zero", "[methods]") {
+  // sqrt 2 - 99/70 < 0 (99^2 = 9801 > 2 * 70^2 = 9800), sqrt 2 - 140/99 > 0 (140^2 = 19600 <
+  // 2 * 99^2 = 19602); 2^(1/3) - 5/4 > 0 and 2^(1/3) - 63/50 < 0 (125 < 128, 250047 > 250000).
+  const auto s2 = field_element::generator(field_of({-2, 0, 1}));
+  CHECK(exact_sign(s2 - field_element(exact_rational(99, 70))) == -1);
+  CHECK(exact_sign(s2 - field_element(exact_rational(140, 99))) == 1);
+  CHECK(exact_sign(s2 * s2 - field_element(2)) == 0);
+  const auto c2 = field_element::generator(field_of({-2, 0, 0, 1}));
+  CHECK(exact_sign(c2 - field_element(exact_rational(5, 4))) == 1);
+  CHECK(exact_sign(c2 - field_element(exact_rational(63, 50))) == -1);
+  // Beyond the initial bracket (width 2^-64 of the bound): 2^(1/3) - a / 2^80 for a = the floor
+  // of 2^(1/3) 2^80 is positive and below 2^-80 (a^3 < 2^241 < (a + 1)^3, checked exactly).
+  const boost::multiprecision::cpp_int scale = boost::multiprecision::cpp_int(1) << 80;
+  boost::multiprecision::cpp_int a = 0;
+  for (int bit = 81; bit >= 0; --bit) {
+    const boost::multiprecision::cpp_int trial = a + (boost::multiprecision::cpp_int(1) << bit);
+    if (trial * trial * trial <= 2 * scale * scale * scale) a = trial;
+  }
+  REQUIRE(a * a * a < 2 * scale * scale * scale);
+  CHECK(exact_sign(c2 - field_element(exact_rational(a, scale))) == 1);
+  CHECK(exact_sign(c2 - field_element(exact_rational(a + 1, scale))) == -1);
+}

@@ -7,9 +7,10 @@
 //       order (Nystrom trees), stage order, symplecticity, symmetry, error constants, linear
 //       stability (interval of periodicity or of absolute stability), dissipation, phase lag
 //   geomint-scheme --analyse --tableau FILE [--csv]
-//       order (B-/P-series against the exact flow) and symplecticity of the method of a tableau
-//       file, exactly over its coefficients (include/geomint/analysis/bseries/method_analysis.hpp),
-//       symmetry, stage order and linear stability (analysis/method_verdicts.hpp, rk_stability.hpp)
+//       order (B-/P-series against the exact flow), error constants and symplecticity of the method
+//       of a tableau file, exactly over its coefficients (include/geomint/analysis/bseries:
+//       method_analysis.hpp, error_constants.hpp), symmetry, stage order and linear stability over
+//       Q or Q(r) (analysis/method_verdicts.hpp, rk_stability.hpp, field_stability.hpp)
 //   geomint-scheme --print-tableau [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all]
 //       the exact tableau (node polynomial and monomial-basis matrices, or rationals)
 //   geomint-scheme --analyse|--print-tableau --scheme NAME [--csv]; geomint-scheme --list-methods
@@ -32,6 +33,7 @@
 #include <vector>
 
 #include "../common/cli.hpp"
+#include "geomint/analysis/bseries/error_constants.hpp"
 #include "geomint/analysis/bseries/method_analysis.hpp"
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/method_verdicts.hpp"
@@ -72,10 +74,13 @@ const char* usage_text =
     "              (rk, prk) or the exact RKN conditions (rkn, nystrom); symmetry up to any stage\n"
     "              permutation, stage order; rk: R(z) on y' = lambda y, A- and L-stability, the\n"
     "              imaginary-axis interval (stability a-stable, else its kind); every kind: the step\n"
-    "              on y'' = -y (prk, rkn, nystrom: stability periodic|absolute|none). The same CSV\n"
-    "              columns; error_constant '-', and the stability columns '-' where the exact\n"
-    "              analysis needs rational stability polynomials, at most 8 stages and sum b = 1\n"
-    "              and the file's method has not them; excludes --scheme, --nodes and --m\n"
+    "              on y'' = -y (prk, rkn, nystrom: stability periodic|absolute|none), exactly over Q\n"
+    "              and over Q(r) (the interval end an algebraic number, 30 digits); error constant\n"
+    "              C at order p + 1 (rk: rooted trees; prk: bi-coloured, per component C_1, C_2;\n"
+    "              rkn, nystrom: Nystrom trees, position C_q and velocity C_p as published). The\n"
+    "              same CSV columns; '-' where a value is not decided (error_constant: order a\n"
+    "              lower bound; stability: sum b != 1, or a condition polynomial (over Q(r): its\n"
+    "              norm) of degree above 22); excludes --scheme, --nodes and --m\n"
     "  --print-tableau  the exact tableau of a built-in scheme: node polynomial N and the\n"
     "              matrices on Q[x]/(N) in the monomial basis (or rationals), with 30-digit\n"
     "              decimals of c, a, bbar, b\n"
@@ -224,12 +229,63 @@ int two_step(const options& o) {
   return cli::finish_stdout("geomint-scheme");
 }
 
+/// A polynomial in r with rational coefficients (constant first) in the tableau file's syntax,
+/// in ascending powers (or descending: `highest_first`).
+std::string polynomial_text(const std::vector<methods::exact_rational>& c, bool highest_first = false) {
+  std::string out;
+  for (std::size_t n = 0; n < c.size(); ++n) {
+    const std::size_t k = highest_first ? c.size() - 1 - n : n;
+    if (c[k] == 0) continue;
+    std::string coefficient = c[k].str();
+    if (k > 0 && (c[k] == 1 || c[k] == -1)) coefficient = c[k] == 1 ? "" : "-";
+    std::string term = coefficient;
+    if (k > 0) term += (coefficient.empty() || coefficient == "-" ? "" : "*") + std::string("r") + (k > 1 ? "^" + std::to_string(k) : "");
+    out += (out.empty() || term[0] == '-') ? term : "+" + term;
+  }
+  return out.empty() ? "0" : out;
+}
+std::string entry_text(const methods::field_element& x) { return polynomial_text(x.coefficients()); }
+
 const char* analyse_header =
     "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,stability_interval,phase_lag_order,kind,"
     "stage_order,stability,dissipation_order\n";
 
+/// An exact constant: a rational, or an element of Q(r) as its polynomial in r and 30 digits.
+std::string exact_text(const exact_number& x) { return x.str(); }
+std::string exact_text(const methods::field_element& x) {
+  if (x.is_rational()) return x.rational_value().str();
+  return entry_text(x) + " = " + digits30(x.to<decimal>());
+}
+/// A polynomial over Q(r), ascending coefficients, in z: "1 + (1/2-r) z + ...".
+std::string field_polynomial_text(const std::vector<methods::field_element>& p) {
+  std::string out;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    if (p[k].is_zero()) continue;
+    out += (out.empty() ? "" : " + ") + std::string(k ? "(" : "") + entry_text(p[k]) + (k ? ") z" : "") +
+           (k > 1 ? "^" + std::to_string(k) : "");
+  }
+  return out.empty() ? "0" : out;
+}
+/// sqrt of a squared error constant to 4 digits (the CSV column's precision).
+std::string constant_text(const methods::field_element& squared) {
+  using std::sqrt;
+  return digits3(sqrt(squared.to<decimal>()));
+}
+
+/// The step on y'' = -y of a method (linear_stability_result or field_linear_stability_result).
+template <class Result>
+void print_oscillator(const Result& ls, const stability_interval& interval) {
+  std::cout << "  y'' = -y: " << (ls.determinant_is_one ? "det M = 1, interval of periodicity" : "det M != 1, interval of absolute stability")
+            << " tau* = " << interval_text(interval) << "; phase-lag order " << ls.phase_lag_order << ", constant "
+            << exact_text(ls.phase_lag_constant) << "; dissipation "
+            << (ls.determinant_is_one ? std::string("none")
+                                      : "order " + std::to_string(ls.dissipation_order) + ", constant " + exact_text(ls.dissipation_constant))
+            << "\n";
+}
+
 /// --analyse --tableau FILE: the exact series analysis of the file's method (the tableau read
-/// by read_tableau_file, the data geomint-run --tableau integrates) and its verdicts
+/// by read_tableau_file, the data geomint-run --tableau integrates), its principal error
+/// constants (analysis/bseries/error_constants.hpp) and its verdicts
 /// (analysis/method_verdicts.hpp): symmetry, stage order, linear stability.
 int analyse_file(const options& o, const methods::tableau_data<methods::field_element>& t) {
   const analysis::bseries::method_analysis r = analysis::bseries::analyse_method(t);
@@ -237,13 +293,28 @@ int analyse_file(const options& o, const methods::tableau_data<methods::field_el
   const std::string order = std::to_string(r.order) + (r.order_is_lower_bound ? "+" : "");
   const std::string name = t.name.empty() ? std::string("-") : t.name;
   const std::string kind(methods::to_string(t.kind));
-  const linear_stability_result& ls = v.oscillator;
-  const std::string dissipation = !v.has_oscillator ? "-" : (ls.determinant_is_one ? "inf" : std::to_string(ls.dissipation_order));
+  bool has_constants = false;
+  analysis::bseries::error_constants<methods::field_element> ec;
+  std::string constants_reason = "the order is a lower bound";
+  if (!r.order_is_lower_bound) {
+    try {
+      ec = analysis::bseries::principal_error_constants(t, r.order);
+      has_constants = true;
+    } catch (const std::exception& e) {
+      constants_reason = e.what();
+    }
+  }
+  const bool oscillator = v.has_oscillator || v.oscillator_in_field;
+  const bool determinant_is_one = v.has_oscillator ? v.oscillator.determinant_is_one : v.field_oscillator.determinant_is_one;
+  const int phase_lag_order = v.has_oscillator ? v.oscillator.phase_lag_order : v.field_oscillator.phase_lag_order;
+  const int dissipation_order = v.has_oscillator ? v.oscillator.dissipation_order : v.field_oscillator.dissipation_order;
+  const std::string dissipation = !oscillator ? "-" : (determinant_is_one ? "inf" : std::to_string(dissipation_order));
   if (o.csv) {
     std::cout << analyse_header << name << ",-,-," << t.stages << "," << order << "," << (r.symplectic ? "yes" : "no") << ","
-              << (v.symmetric ? "yes" : "no") << ",-," << (v.has_stability ? interval_text(v.interval) : "-") << ","
-              << (v.has_oscillator ? std::to_string(ls.phase_lag_order) : "-") << "," << kind << "," << v.stage_order << ","
-              << (v.has_stability ? std::string(to_string(v.stability)) : "-") << "," << dissipation << "\n";
+              << (v.symmetric ? "yes" : "no") << "," << (has_constants ? constant_text(ec.squared) : "-") << ","
+              << (v.has_stability ? interval_text(v.interval) : "-") << "," << (oscillator ? std::to_string(phase_lag_order) : "-") << ","
+              << kind << "," << v.stage_order << "," << (v.has_stability ? std::string(to_string(v.stability)) : "-") << ","
+              << dissipation << "\n";
     return cli::finish_stdout("geomint-scheme");
   }
   std::cout << o.method_label << ": " << name << " (" << kind << ", " << t.stages << " stages)\n"
@@ -252,21 +323,34 @@ int analyse_file(const options& o, const methods::tableau_data<methods::field_el
             << " up to order " << r.tree_order << "), stage order " << v.stage_order << "\n"
             << "  symplectic: " << (r.symplectic ? "yes" : "no") << " (" << r.symplecticity_basis << "); symmetric: "
             << (v.symmetric ? "yes" : "no") << " (up to a permutation of the stages)\n";
+  if (has_constants) {
+    std::cout << "  principal error constant C = " << constant_text(ec.squared);
+    if (ec.squared.is_rational()) std::cout << ", C^2 = " << exact_text(ec.squared);
+    if (t.kind == methods::method_kind::prk)
+      std::cout << " (first component (A, b) C_1 = " << constant_text(ec.first_squared) << ", second (Ahat, bhat) C_2 = "
+                << constant_text(ec.second_squared) << ")";
+    else if (ec.components == 2)
+      std::cout << " (position C_q = " << constant_text(ec.first_squared) << ", velocity C_p = " << constant_text(ec.second_squared) << ")";
+    std::cout << " at order " << ec.order + 1 << "\n";
+  } else {
+    std::cout << "  principal error constant: not computed (" << constants_reason << ")\n";
+  }
   if (t.kind == methods::method_kind::rk) {
-    if (v.has_rk)
-      std::cout << "  y' = lambda y: R(z) = (" << polynomial_in_tau(v.rk.numerator, "z", 1) << ")/("
-                << polynomial_in_tau(v.rk.denominator, "z", 1) << "); A-stable: " << (v.rk.a_stable ? "yes" : "no")
-                << ", L-stable: " << (v.rk.l_stable ? "yes" : "no") << "; |R(iy)| <= 1 for 0 <= y <= " << interval_text(v.rk.imaginary_axis)
-                << "\n";
-    else
+    if (v.has_rk || v.rk_in_field) {
+      const bool a_stable = v.has_rk ? v.rk.a_stable : v.field_rk.a_stable, l_stable = v.has_rk ? v.rk.l_stable : v.field_rk.l_stable;
+      std::cout << "  y' = lambda y: R(z) = ("
+                << (v.has_rk ? polynomial_in_tau(v.rk.numerator, "z", 1) : field_polynomial_text(v.field_rk.numerator)) << ")/("
+                << (v.has_rk ? polynomial_in_tau(v.rk.denominator, "z", 1) : field_polynomial_text(v.field_rk.denominator))
+                << "); A-stable: " << (a_stable ? "yes" : "no") << ", L-stable: " << (l_stable ? "yes" : "no")
+                << "; |R(iy)| <= 1 for 0 <= y <= " << interval_text(v.has_rk ? v.rk.imaginary_axis : v.field_rk.imaginary_axis) << "\n";
+    } else {
       std::cout << "  y' = lambda y: not decided (" << v.rk_reason << ")\n";
+    }
   }
   if (v.has_oscillator)
-    std::cout << "  y'' = -y: " << (ls.determinant_is_one ? "det M = 1, interval of periodicity" : "det M != 1, interval of absolute stability")
-              << " tau* = " << stability_text(ls) << "; phase-lag order " << ls.phase_lag_order << ", constant "
-              << ls.phase_lag_constant.str() << "; dissipation "
-              << (ls.determinant_is_one ? std::string("none") : "order " + dissipation + ", constant " + ls.dissipation_constant.str())
-              << "\n";
+    print_oscillator(v.oscillator, linear_stability_interval(v.oscillator));
+  else if (v.oscillator_in_field)
+    print_oscillator(v.field_oscillator, v.field_oscillator.interval);
   else
     std::cout << "  y'' = -y: not decided (" << v.oscillator_reason << ")\n";
   if (v.has_stability) std::cout << "  stability: " << to_string(v.stability) << ", interval " << interval_text(v.interval) << "\n";
@@ -372,23 +456,6 @@ int list_methods() {
               << e.source << "\"\n";
   return cli::finish_stdout("geomint-scheme");
 }
-
-/// A polynomial in r with rational coefficients (constant first) in the tableau file's syntax,
-/// in ascending powers (or descending: `highest_first`).
-std::string polynomial_text(const std::vector<methods::exact_rational>& c, bool highest_first = false) {
-  std::string out;
-  for (std::size_t n = 0; n < c.size(); ++n) {
-    const std::size_t k = highest_first ? c.size() - 1 - n : n;
-    if (c[k] == 0) continue;
-    std::string coefficient = c[k].str();
-    if (k > 0 && (c[k] == 1 || c[k] == -1)) coefficient = c[k] == 1 ? "" : "-";
-    std::string term = coefficient;
-    if (k > 0) term += (coefficient.empty() || coefficient == "-" ? "" : "*") + std::string("r") + (k > 1 ? "^" + std::to_string(k) : "");
-    out += (out.empty() || term[0] == '-') ? term : "+" + term;
-  }
-  return out.empty() ? "0" : out;
-}
-std::string entry_text(const methods::field_element& x) { return polynomial_text(x.coefficients()); }
 
 /// --print-tableau --scheme NAME: the catalogue method as a tableau file (read back by
 /// --analyse --tableau and geomint-run --tableau).

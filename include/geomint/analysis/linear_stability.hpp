@@ -31,24 +31,19 @@
 /// smallest positive root of odd multiplicity (a sign change) of any of them, infinite when
 /// there is none. Roots of even multiplicity inside are isolated points where a root of modulus 1
 /// touches the circle (a double root +-1 there, a Jordan block, is measure-zero and ignored).
-/// The root is an exact algebraic number: the squarefree part of F, its Sturm sequence (exact
-/// primitive remainder sequence) and exact bisection isolate it in a rational interval
-/// (low, high] holding no other root; `refined` narrows it and `compare_squared` compares it
-/// with a rational exactly. Everything is constexpr.
+/// The root is an exact algebraic number isolated in a rational interval (stability_interval.hpp:
+/// `refined` narrows it, `compare_squared` compares it with a rational exactly). Everything is
+/// constexpr; coefficients in Q(r): field_stability.hpp.
 
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 
 #include "geomint/analysis/rkn_tableau.hpp"
+#include "geomint/analysis/stability_interval.hpp"
 #include "geomint/core/integer_polynomial.hpp"
 
 namespace geomint {
-
-/// Degree bound of the stability polynomials.
-inline constexpr int max_stability_degree = max_exact_stages + 2;
-using stability_integer = big_integer<exact_algebra_limbs>;
-using stability_polynomial = integer_polynomial<exact_algebra_limbs, 2 * max_stability_degree + 2>;
 
 /// The exact two-step form and linear stability of a tableau. Structural.
 struct linear_stability_result {
@@ -183,21 +178,24 @@ constexpr stability_integer factorial(int n) {
 /// The first nonzero coefficient of t / (2 sqrt d) - cos H as a power series in z = H^2, with
 /// t = Tn / D and d = Dn / D^2 (exact power series of 1/D, 1/D^2 and d^(-1/2); the last by
 /// d y' = -(1/2) d' y, i.e. n y_n = sum_{k=1..n} (k/2 - n) d_k y_{n-k}, d_0 = 1). Returns the
-/// index n and the coefficient e (phi(H) = e H^(2n-1) + ...).
+/// index n and the coefficient e (phi(H) = e H^(2n-1) + ...). K: exact_number (Poly: qpoly) or,
+/// at run time, field_element (field_stability.hpp); Poly has coefficients c[k], k <= degree.
+template <class K>
 struct series_term {
   int index = -1;
-  exact_number coefficient{};
+  K coefficient{};
 };
-constexpr series_term phase_series(const qpoly& Tn, const qpoly& D, const qpoly& Dn) {
+template <class K, class Poly>
+constexpr series_term<K> phase_series(const Poly& Tn, const Poly& D, const Poly& Dn) {
   constexpr int terms = 2 * max_stability_degree + 8;
-  exact_number inv_d[terms], inv_d2[terms], det[terms], y[terms], tr[terms];
-  exact_number cosine(1);  // (-1)^n / (2n)!
+  K inv_d[terms], inv_d2[terms], det[terms], y[terms], tr[terms];
+  K cosine(1);  // (-1)^n / (2n)!
   for (int n = 0; n < terms; ++n) {
-    if (n > 0) cosine = -cosine / exact_number((2 * n - 1) * (2 * n));
-    exact_number sum;
+    if (n > 0) cosine = -cosine / K((2 * n - 1) * (2 * n));
+    K sum;
     for (int k = 1; k <= n && k <= D.degree; ++k) sum = sum + D.c[k] * inv_d[n - k];
-    inv_d[n] = n == 0 ? exact_number(1) / D.c[0] : -sum / D.c[0];
-    exact_number s2, sd, st;
+    inv_d[n] = n == 0 ? K(1) / D.c[0] : -sum / D.c[0];
+    K s2, sd, st;
     for (int k = 0; k <= n; ++k) s2 = s2 + inv_d[k] * inv_d[n - k];
     inv_d2[n] = s2;
     for (int k = 0; k <= n && k <= Dn.degree; ++k) sd = sd + Dn.c[k] * inv_d2[n - k];
@@ -205,16 +203,16 @@ constexpr series_term phase_series(const qpoly& Tn, const qpoly& D, const qpoly&
     for (int k = 0; k <= n && k <= Tn.degree; ++k) st = st + Tn.c[k] * inv_d[n - k];
     tr[n] = st;
     if (n == 0) {
-      if (!(det[0] == exact_number(1))) throw std::domain_error("geomint::linear_stability: det M(0) != 1");
-      y[0] = exact_number(1);
+      if (!(det[0] == K(1))) throw std::domain_error("geomint::linear_stability: det M(0) != 1");
+      y[0] = K(1);
     } else {
-      exact_number sy;
-      for (int k = 1; k <= n; ++k) sy = sy + exact_number(rational(k - 2 * n, 2)) * det[k] * y[n - k];
-      y[n] = sy / exact_number(n);
+      K sy;
+      for (int k = 1; k <= n; ++k) sy = sy + (K(k - 2 * n) / K(2)) * det[k] * y[n - k];
+      y[n] = sy / K(n);
     }
-    exact_number w;
+    K w;
     for (int k = 0; k <= n; ++k) w = w + tr[k] * y[n - k];
-    w = w / exact_number(2);
+    w = w / K(2);
     if (!(w == cosine)) return {n, w - cosine};
   }
   throw std::domain_error("geomint::linear_stability: t / (2 sqrt d) - cos H vanishes to the series length");
@@ -291,7 +289,7 @@ constexpr linear_stability_result linear_stability_from_determinants(const qpoly
   while (excess.c[k].num.is_zero()) ++k;
   out.dissipation_order = 2 * k - 1;
   out.dissipation_constant = -(excess.c[k] / (D.c[0] * D.c[0])) / exact_number(2);
-  const series_term phase = phase_series(trace_num, D, det_num);
+  const series_term<exact_number> phase = phase_series<exact_number>(trace_num, D, det_num);
   out.phase_lag_order = 2 * phase.index - 2;
   out.phase_lag_constant = phase.coefficient;
   return out;
@@ -306,233 +304,6 @@ constexpr linear_stability_result linear_stability(const exact_rkn_tableau& t) {
       bordered_determinant(t, false, t.one, t.b), bordered_determinant(t, true, t.one, t.bbar),
       bordered_determinant(t, true, t.c, t.bbar), bordered_determinant(t, true, t.one, t.b), bordered_determinant(t, true, t.c, t.b));
 }
-
-/// Which interval a method has on y'' = -y.
-enum class stability_kind {
-  periodic,  ///< det M = 1: interval of periodicity (|tr M| <= 2)
-  absolute   ///< det M != 1: interval of absolute stability (spectral radius <= 1)
-};
-
-namespace analysis::detail {
-
-/// Exact root isolation: wide integers for the Sturm sequences and for the signs at rational
-/// points (the sequences of degree-16 polynomials and points of 130-bit numerators need some
-/// 2500 bits; an overflow throws, never a wrong sign).
-inline constexpr int root_limbs = 96;
-using wide_integer = big_integer<root_limbs>;
-using wide_polynomial = integer_polynomial<root_limbs, 2 * max_stability_degree + 2>;
-
-template <int L>
-constexpr wide_integer widen(const big_integer<L>& x) {
-  wide_integer w;
-  for (int k = 0; k < x.size; ++k) w.limb[k] = x.limb[k];
-  w.size = x.size;
-  w.negative = x.negative;
-  return w;
-}
-constexpr wide_polynomial widen(const stability_polynomial& p) {
-  wide_polynomial w;
-  for (int k = 0; k <= p.degree; ++k) w[k] = widen(p[k]);
-  w.trim();
-  return w;
-}
-
-/// Sign of p at the rational x = n / d (d > 0): the sign of sum_k p_k n^k d^(deg - k).
-constexpr int sign_at(const wide_polynomial& p, const exact_number& x) {
-  if (p.is_zero()) return 0;
-  const wide_integer n = widen(x.num), d = widen(x.den());
-  wide_integer v, dk(1);
-  for (int k = p.degree; k >= 0; --k) {
-    v = v * n;
-    if (!p[k].is_zero()) v += p[k] * dk;
-    if (k > 0) dk = dk * d;
-  }
-  return v.sign();
-}
-
-constexpr wide_polynomial derivative(const wide_polynomial& p) {
-  wide_polynomial r;
-  for (int k = 1; k <= p.degree; ++k) r[k - 1] = wide_integer(k) * p[k];
-  r.trim();
-  return r;
-}
-
-/// The Sturm sequence of a squarefree p: p, p', then -(positive multiple of the remainder),
-/// primitive (pseudo-division by |lead| keeps the signs; the content removed is positive).
-struct sturm_sequence {
-  wide_polynomial p[2 * max_stability_degree + 3];
-  int length = 0;
-  /// Sign changes at x (zeros skipped).
-  constexpr int variations(const exact_number& x) const {
-    int count = 0, last = 0;
-    for (int i = 0; i < length; ++i) {
-      const int sg = sign_at(p[i], x);
-      if (sg == 0) continue;
-      if (last != 0 && sg != last) ++count;
-      last = sg;
-    }
-    return count;
-  }
-};
-constexpr sturm_sequence make_sturm_sequence(const wide_polynomial& h) {
-  sturm_sequence s;
-  s.p[0] = h;
-  s.p[1] = derivative(h);
-  s.length = 2;
-  while (s.p[s.length - 1].degree > 0) {
-    const wide_polynomial& v = s.p[s.length - 1];
-    wide_polynomial r = s.p[s.length - 2];
-    while (!r.is_zero() && r.degree >= v.degree) {
-      const int shift = r.degree - v.degree;
-      const wide_integer f = v.lead().negative ? -r.lead() : r.lead();
-      r = abs(v.lead()) * r;
-      for (int j = 0; j <= v.degree; ++j) r[shift + j] -= f * v[j];
-      r.trim();
-    }
-    if (r.is_zero()) throw std::logic_error("geomint: Sturm sequence of a polynomial that is not squarefree");
-    s.p[s.length] = wide_integer(-1) * primitive_part(r);
-    ++s.length;
-  }
-  return s;
-}
-
-/// bits(|x|): 0 for 0.
-constexpr int bit_length(const wide_integer& x) {
-  if (x.size == 0) return 0;
-  int bits = 32 * (x.size - 1);
-  for (std::uint32_t top = x.limb[x.size - 1]; top != 0; top >>= 1) ++bits;
-  return bits;
-}
-
-constexpr exact_number power_of_two(int e) {
-  exact_number r(1);
-  const exact_number two(2);
-  for (int k = 0; k < e; ++k) r = r * two;
-  for (int k = 0; k > e; --k) r = r / two;
-  return r;
-}
-
-/// A positive real root of F (F(0) != 0), isolated: the only root of F in (low, high], F has the
-/// sign `below` on (low, root); low == high when the root is that rational.
-struct isolated_root {
-  bool found = false;
-  wide_polynomial polynomial{};
-  exact_number low{}, high{};
-  int below = 0;
-};
-
-/// The smallest positive root of odd multiplicity of F (F(0) != 0): Sturm sequence of the
-/// squarefree part h = F / gcd(F, F'), bisection from the Cauchy bound until one root of h is
-/// isolated, and a sign test of F on both sides of it (an even root is passed over).
-constexpr isolated_root smallest_odd_positive_root(const wide_polynomial& F) {
-  isolated_root out;
-  out.polynomial = F;
-  out.below = F[0].sign();
-  if (F.degree < 1) return out;
-  wide_polynomial h = F;
-  const wide_polynomial g = polynomial_gcd(F, derivative(F));
-  if (g.degree > 0) h = exact_quotient(F, g);
-  if (h.degree < 1) return out;
-  const sturm_sequence sturm = make_sturm_sequence(h);
-  // Cauchy: every root is below 1 + max |h_k / h_n| <= 2^e.
-  int top = 0;
-  for (int k = 0; k < h.degree; ++k) top = std::max(top, bit_length(h[k]));
-  const int e = std::max(1, top - bit_length(h.lead()) + 2);
-  const exact_number upper = power_of_two(e), two(2);
-  exact_number lo(0);
-  while (true) {
-    const int v_upper = sturm.variations(upper);
-    if (sturm.variations(lo) - v_upper == 0) return out;  // no root left: no sign change
-    exact_number a = lo, b = upper;
-    int v_a = sturm.variations(a), v_b = v_upper;
-    while (v_a - v_b > 1) {
-      const exact_number mid = (a + b) / two;
-      const int v_mid = sturm.variations(mid);
-      if (v_a - v_mid >= 1) {
-        b = mid;
-        v_b = v_mid;
-      } else {
-        a = mid;
-        v_a = v_mid;
-      }
-    }
-    // One root r of h in (a, b]; F has the sign `below` on (lo, r).
-    if (sign_at(h, b) == 0) {  // r = b: the sign just right of it
-      exact_number c = b + (b - a);
-      while (sturm.variations(b) - sturm.variations(c) > 0) c = (b + c) / two;
-      if (sign_at(F, c) != out.below) {
-        out.found = true;
-        out.low = out.high = b;
-        return out;
-      }
-    } else if (sign_at(F, b) != out.below) {
-      out.found = true;
-      out.low = a;
-      out.high = b;
-      return out;
-    }
-    lo = b;
-  }
-}
-
-/// Halves (low, high] around the root until high - low <= 2^-bits high.
-constexpr void refine(isolated_root& r, int bits) {
-  const exact_number two(2), tolerance = power_of_two(-bits);
-  while (r.low < r.high && tolerance * r.high < r.high - r.low) {
-    const exact_number mid = (r.low + r.high) / two;
-    const int s = sign_at(r.polynomial, mid);
-    if (s == 0) {
-      r.low = r.high = mid;
-    } else if (s == r.below) {
-      r.low = mid;
-    } else {
-      r.high = mid;
-    }
-  }
-}
-
-/// sign(x - root), exactly.
-constexpr int compare_with_root(const isolated_root& r, const exact_number& x) {
-  if (!(r.low < x)) return r.low == r.high && x == r.low ? 0 : -1;
-  if (r.high < x) return 1;
-  const int s = sign_at(r.polynomial, x);
-  return s == 0 ? 0 : (s == r.below ? -1 : 1);
-}
-
-/// F / z^k with F(0) != 0 (F not zero).
-constexpr wide_polynomial without_zero_roots(wide_polynomial F) {
-  int k = 0;
-  while (F[k].is_zero()) ++k;
-  wide_polynomial r;
-  for (int j = k; j <= F.degree; ++j) r[j - k] = F[j];
-  r.trim();
-  return primitive_part(r);
-}
-
-}  // namespace analysis::detail
-
-/// The stability interval (0, tau*) of a method on y'' = -y (see the header comment): empty,
-/// unbounded, or tau*^2 = z* an exact algebraic number, the isolated root of `bound`.
-struct stability_interval {
-  stability_kind kind = stability_kind::periodic;
-  bool empty = false;
-  bool unbounded = true;
-  analysis::detail::isolated_root bound{};  ///< z* = tau*^2 with its polynomial and bracket
-  /// sign(z - z*) for a rational z = tau^2 (-1: inside the interval; unbounded: always -1).
-  constexpr int compare_squared(const exact_number& z) const {
-    if (empty) return 1;
-    if (unbounded) return -1;
-    return analysis::detail::compare_with_root(bound, z);
-  }
-  /// z* bracketed by (low, high] with high - low <= 2^-bits high.
-  constexpr stability_interval refined(int bits) const {
-    stability_interval r = *this;
-    if (!empty && !unbounded) analysis::detail::refine(r.bound, bits);
-    return r;
-  }
-  constexpr const exact_number& low() const { return bound.low; }
-  constexpr const exact_number& high() const { return bound.high; }
-};
 
 /// The exact stability interval: of periodicity when det M = 1, of absolute stability otherwise.
 constexpr stability_interval linear_stability_interval(const linear_stability_result& r) {
@@ -561,35 +332,8 @@ constexpr stability_interval linear_stability_interval(const linear_stability_re
       out.unbounded = false;
       return out;
     }
-    analysis::detail::isolated_root root = analysis::detail::smallest_odd_positive_root(F);
-    if (!root.found) continue;
-    if (out.unbounded) {
-      out.bound = root;
-      out.unbounded = false;
-      continue;
-    }
-    // Keep the smaller of two algebraic numbers: narrow both brackets until they are disjoint or
-    // one's rational bracket end is the other's root.
-    for (int bits = 8;; bits += 8) {
-      if (!(out.bound.low < root.high)) {  // root <= root.high <= out.bound.low < out.bound
-        out.bound = root;
-        break;
-      }
-      if (!(root.low < out.bound.high)) break;  // out.bound <= out.bound.high <= root.low < root
-      if (root.low == root.high && analysis::detail::compare_with_root(out.bound, root.low) >= 0) {
-        out.bound = root;
-        break;
-      }
-      if (out.bound.low == out.bound.high && analysis::detail::compare_with_root(root, out.bound.low) >= 0) break;
-      if (bits > 192) {
-        // Brackets still overlapping at 2^-192: equal when the polynomials share a factor (a
-        // common root); otherwise no decision (an exception, never a guess).
-        if (polynomial_gcd(out.bound.polynomial, root.polynomial).degree > 0) break;
-        throw std::logic_error("geomint::linear_stability_interval: cannot separate two bounds");
-      }
-      analysis::detail::refine(out.bound, bits);
-      analysis::detail::refine(root, bits);
-    }
+    const analysis::detail::isolated_root root = analysis::detail::smallest_odd_positive_root(F);
+    if (root.found) analysis::detail::keep_smaller_bound(out, root);
   }
   return out;
 }

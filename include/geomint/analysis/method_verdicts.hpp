@@ -32,8 +32,10 @@
 ///   determinants of linear_stability.hpp evaluated over K at z = 0..S and interpolated, then
 ///   that header's exact analysis (periodicity where det M = 1, else absolute stability,
 ///   dissipation, phase lag). Needs sum b = 1, rational polynomials and S <= 8
-///   (std::domain_error naming which fails).
-/// - `verdicts(t)` (run time): all of them, with the stability verdict of the CSV column
+///   (std::domain_error naming which fails); over Q(r) `field_linear_stability(t)` (run time, any
+///   S) is the same analysis for irrational polynomials (field_stability.hpp).
+/// - `verdicts(t)` (run time): all of them (over field_element: the field path where the rational
+///   one does not decide: field_oscillator, field_rk), with the stability verdict of the CSV column
 ///   `stability`: rk `a-stable` when A-stable (rk_stability.hpp; also when L-stable, see
 ///   `l_stable`), else the kind of its imaginary-axis interval; prk, rkn, nystrom `periodic`
 ///   (det M = 1) or `absolute`; `none` for an empty interval.
@@ -47,6 +49,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "geomint/analysis/field_stability.hpp"
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/rk_stability.hpp"
 #include "geomint/methods/nystrom_form.hpp"
@@ -153,14 +156,15 @@ constexpr int rkn_stage_order(const Matrix& a, const Matrix* ap, const Weights& 
 }
 
 /// The step on y'' = -y of the RKN coefficients (c, a, bbar, b) over K (see the header comment):
-/// D = det(I + z A) and the bordered determinants det [[I + z A, u], [v^T, 0]] at z = 0..s,
-/// interpolated. `work` is an (s + 1) x (s + 1) matrix of K, `values` holds s + 1 entries.
+/// D = det(I + z A) and the bordered determinants det [[I + z A, u], [v^T, 0]] for (v, u) =
+/// (bbar, 1), (bbar, c), (b, 1), (b, c) at z = 0..s, interpolated (coefficients over K, ascending).
+/// `work` is an (s + 1) x (s + 1) matrix of K, `values` holds s + 1 entries.
 template <class K, class Vector, class Matrix, class Work, class Values>
-constexpr linear_stability_result oscillator_stability(const Vector& c, const Matrix& a, const Vector& bbar, const Vector& b,
-                                                       std::size_t s, Work work, const Values& values) {
+constexpr std::array<Values, 5> oscillator_determinants(const Vector& c, const Matrix& a, const Vector& bbar, const Vector& b,
+                                                        std::size_t s, Work work, const Values& values) {
   Vector one = c;
   for (std::size_t i = 0; i < s; ++i) one[i] = K(1);
-  Values D = values, bbar_one = values, bbar_c = values, b_one = values, b_c = values;
+  std::array<Values, 5> out{values, values, values, values, values};
   auto bordered = [&](const K& z, const Vector* u, const Vector* v) {
     for (std::size_t i = 0; i < s; ++i)
       for (std::size_t j = 0; j < s; ++j) work[i][j] = K(i == j ? 1 : 0) + z * a[i][j];
@@ -174,15 +178,22 @@ constexpr linear_stability_result oscillator_stability(const Vector& c, const Ma
   };
   for (std::size_t k = 0; k <= s; ++k) {
     const K z(static_cast<std::int64_t>(k));
-    D[k] = bordered(z, nullptr, nullptr);
-    bbar_one[k] = bordered(z, &one, &bbar);
-    bbar_c[k] = bordered(z, &c, &bbar);
-    b_one[k] = bordered(z, &one, &b);
-    b_c[k] = bordered(z, &c, &b);
+    out[0][k] = bordered(z, nullptr, nullptr);
+    out[1][k] = bordered(z, &one, &bbar);
+    out[2][k] = bordered(z, &c, &bbar);
+    out[3][k] = bordered(z, &one, &b);
+    out[4][k] = bordered(z, &c, &b);
   }
-  return linear_stability_from_determinants(to_qpoly(interpolate<K>(D, s)), to_qpoly(interpolate<K>(bbar_one, s)),
-                                            to_qpoly(interpolate<K>(bbar_c, s)), to_qpoly(interpolate<K>(b_one, s)),
-                                            to_qpoly(interpolate<K>(b_c, s)));
+  for (Values& v : out) v = interpolate<K>(v, s);
+  return out;
+}
+
+/// The exact analysis of linear_stability.hpp from those determinants (rational polynomials).
+template <class K, class Vector, class Matrix, class Work, class Values>
+constexpr linear_stability_result oscillator_stability(const Vector& c, const Matrix& a, const Vector& bbar, const Vector& b,
+                                                       std::size_t s, Work work, const Values& values) {
+  const std::array<Values, 5> d = oscillator_determinants<K>(c, a, bbar, b, s, work, values);
+  return linear_stability_from_determinants(to_qpoly(d[0]), to_qpoly(d[1]), to_qpoly(d[2]), to_qpoly(d[3]), to_qpoly(d[4]));
 }
 
 /// The RKN coefficients of a fixed-size tableau on q'' = f(q) (methods/nystrom_form.hpp's
@@ -285,6 +296,17 @@ linear_stability_result linear_stability(const methods::tableau_data<K>& t) {
                                                    std::vector<K>(s + 1, K(0)));
 }
 
+/// The exact step on y'' = -y of a tableau over Q(r) (field_stability.hpp; run time, any number
+/// of stages): for coefficients whose stability polynomials are irrational.
+inline field_linear_stability_result field_linear_stability(const methods::tableau_data<methods::field_element>& t) {
+  using K = methods::field_element;
+  const methods::nystrom_form<K> f = methods::nystrom_form_of(t);
+  if (!(f.d == K(1))) throw std::domain_error("the weights b do not sum to 1 (the method is not consistent)");
+  const auto s = static_cast<std::size_t>(f.stages);
+  return field_linear_stability_from_determinants(analysis::detail::oscillator_determinants<K>(
+      f.c, f.a, f.bbar, f.b, s, std::vector<std::vector<K>>(s + 1, std::vector<K>(s + 1, K(0))), std::vector<K>(s + 1, K(0))));
+}
+
 /// The exact step on y'' = -y of a fixed-size tableau of any kind (constexpr over a constexpr K).
 template <class Tableau>
   requires requires(const Tableau& t) { Tableau::kind; t.c; }
@@ -323,6 +345,12 @@ struct method_verdicts {
   bool has_oscillator = false;
   linear_stability_result oscillator{};
   std::string oscillator_reason;
+  /// Over Q(r) with irrational stability polynomials (or more than 8 stages), instead of rk and
+  /// oscillator: field_rk and field_oscillator (field_stability.hpp).
+  bool rk_in_field = false;
+  field_rk_stability_result field_rk{};
+  bool oscillator_in_field = false;
+  field_linear_stability_result field_oscillator{};
   /// The stability verdict and its interval (rk: the imaginary-axis interval; else on
   /// y'' = -y); has_stability false when neither analysis applies.
   bool has_stability = false;
@@ -337,37 +365,40 @@ method_verdicts verdicts(const methods::tableau_data<K>& t) {
   v.permutation = symmetry_permutation(t);
   v.symmetric = v.permutation.found;
   v.stage_order = stage_order(t);
-  try {
-    v.oscillator = linear_stability(t);
-    v.has_oscillator = true;
-  } catch (const std::exception& e) {  // irrational polynomials, more than 8 stages, sum b != 1
-    v.oscillator_reason = e.what();
-  }
-  if (t.kind == methods::method_kind::rk) {
+  // result = compute() and decided = true, or the reason it could not be decided.
+  auto attempt = [](auto compute, auto& result, bool& decided, std::string& reason) {
     try {
-      v.rk = rk_stability(t);
-      v.has_rk = true;
-    } catch (const std::exception& e) {
-      v.rk_reason = e.what();
+      result = compute();
+      decided = true;
+      reason.clear();
+    } catch (const std::exception& e) {  // irrational polynomials, more than 8 stages, sum b != 1
+      reason = e.what();
     }
+  };
+  attempt([&] { return linear_stability(t); }, v.oscillator, v.has_oscillator, v.oscillator_reason);
+  if (t.kind == methods::method_kind::rk) attempt([&] { return rk_stability(t); }, v.rk, v.has_rk, v.rk_reason);
+  if constexpr (std::is_same_v<K, methods::field_element>) {  // where the rational path did not decide
+    if (!v.has_oscillator) attempt([&] { return field_linear_stability(t); }, v.field_oscillator, v.oscillator_in_field, v.oscillator_reason);
+    if (t.kind == methods::method_kind::rk && !v.has_rk)
+      attempt([&] { return field_rk_stability(t); }, v.field_rk, v.rk_in_field, v.rk_reason);
   }
-  if (v.has_rk) {
+  if (v.has_rk || v.rk_in_field) {
     v.has_stability = true;
-    v.interval = v.rk.imaginary_axis;
-    v.l_stable = v.rk.l_stable;
-    if (v.rk.a_stable)
+    v.interval = v.has_rk ? v.rk.imaginary_axis : v.field_rk.imaginary_axis;
+    v.l_stable = v.has_rk ? v.rk.l_stable : v.field_rk.l_stable;
+    if (v.has_rk ? v.rk.a_stable : v.field_rk.a_stable)
       v.stability = stability_verdict::a_stable;
     else if (v.interval.empty)
       v.stability = stability_verdict::none;
     else
       v.stability = v.interval.kind == stability_kind::periodic ? stability_verdict::periodic : stability_verdict::absolute;
-  } else if (v.has_oscillator && t.kind != methods::method_kind::rk) {
+  } else if ((v.has_oscillator || v.oscillator_in_field) && t.kind != methods::method_kind::rk) {
     v.has_stability = true;
-    v.interval = linear_stability_interval(v.oscillator);
+    v.interval = v.has_oscillator ? linear_stability_interval(v.oscillator) : v.field_oscillator.interval;
     if (v.interval.empty)
       v.stability = stability_verdict::none;
     else
-      v.stability = v.oscillator.determinant_is_one ? stability_verdict::periodic : stability_verdict::absolute;
+      v.stability = v.interval.kind == stability_kind::periodic ? stability_verdict::periodic : stability_verdict::absolute;
   }
   return v;
 }

@@ -12,8 +12,9 @@
 ///   time for methods::tableau_data<K> (exact_rational, field_element of methods/number_field.hpp).
 /// - `rk_stability(t)` (or of a `rational_function`): the exact verdicts on R in lowest terms in
 ///   Z[z]. Constexpr; R's coefficients must be rational (a field_element R with an irrational
-///   coefficient is a std::domain_error naming it; the Q(r) tableaux of the literature, Gauss and
-///   Radau with sqrt 3, sqrt 6, sqrt 15, have rational R) and S <= max_exact_stages:
+///   coefficient is a std::domain_error naming it: `field_rk_stability` of field_stability.hpp
+///   decides it at run time; the Q(r) tableaux of the literature, Gauss and Radau with sqrt 3,
+///   sqrt 6, sqrt 15, have rational R) and S <= max_exact_stages:
 ///   - bounded on the imaginary axis: E(y) = |Q(iy)|^2 - |P(iy)|^2 = e(y^2) >= 0 for every real
 ///     y, i.e. e(u) >= 0 for u >= 0. e(0) = 0; e / u^k must be positive at 0 and have no
 ///     positive root of odd multiplicity (Sturm sequences and exact bisection of
@@ -127,7 +128,9 @@ constexpr void stability_polynomials(const Matrix& a, const Weights& b, std::siz
 /// std::domain_error for an irrational field_element).
 constexpr exact_number to_exact(const rational& x) { return exact_number(x); }
 constexpr exact_number to_exact(const exact_number& x) { return x; }
-inline stability_integer to_exact_integer(boost::multiprecision::cpp_int x) {
+/// A big_integer<L> from a cpp_int (std::overflow_error when it does not fit).
+template <int L = exact_algebra_limbs>
+big_integer<L> to_exact_integer(boost::multiprecision::cpp_int x) {
   const bool negative = x < 0;
   if (negative) x = -x;
   std::vector<std::uint32_t> limbs;
@@ -136,9 +139,9 @@ inline stability_integer to_exact_integer(boost::multiprecision::cpp_int x) {
     limbs.push_back(low.convert_to<std::uint32_t>());
     x >>= 32;
   }
-  stability_integer r;
-  const stability_integer base(std::int64_t(1) << 32);
-  for (auto it = limbs.rbegin(); it != limbs.rend(); ++it) r = r * base + stability_integer(static_cast<std::int64_t>(*it));
+  big_integer<L> r;
+  const big_integer<L> base(std::int64_t(1) << 32);
+  for (auto it = limbs.rbegin(); it != limbs.rend(); ++it) r = r * base + big_integer<L>(static_cast<std::int64_t>(*it));
   return negative ? -r : r;
 }
 inline exact_number to_exact(const methods::exact_rational& x) {
@@ -171,26 +174,32 @@ constexpr wide_polynomial squared_modulus_on_axis(const wide_polynomial& f) {
   return out;
 }
 
-/// Whether every root of g has a negative real part (Routh's array; HW II, section IV.3 and
-/// Hurwitz's criterion: the first column is positive iff every Hurwitz determinant is).
-constexpr bool hurwitz(const stability_polynomial& g) {
-  const int n = g.degree;
+/// Whether every root of the degree-n polynomial with coefficients coefficient(k) has a negative
+/// real part (Routh's array; HW II, section IV.3 and Hurwitz's criterion: the first column is
+/// positive iff every Hurwitz determinant is). K: exact_number, or field_element at run time;
+/// `sign` gives the exact sign of a K; at most Width - 2 = n.
+template <class K, int Width, class Coefficient, class Sign>
+constexpr bool routh_hurwitz(int n, const Coefficient& coefficient, const Sign& sign) {
   if (n <= 0) return true;
-  constexpr int width = max_stability_degree + 2;
-  exact_number upper[width], lower[width];
-  const stability_integer sign(g[n].negative ? -1 : 1);
-  for (int k = 0; n - 2 * k >= 0; ++k) upper[k] = exact_number::from_integer(sign * g[n - 2 * k]);
-  for (int k = 0; n - 1 - 2 * k >= 0; ++k) lower[k] = exact_number::from_integer(sign * g[n - 1 - 2 * k]);
+  if (n + 2 > Width) throw std::overflow_error("geomint: Routh array of too high a degree");
+  K upper[Width], lower[Width];
+  const K lead(sign(coefficient(n)));
+  for (int k = 0; n - 2 * k >= 0; ++k) upper[k] = lead * coefficient(n - 2 * k);
+  for (int k = 0; n - 1 - 2 * k >= 0; ++k) lower[k] = lead * coefficient(n - 1 - 2 * k);
   for (int row = 1; row <= n; ++row) {
-    if (lower[0].sign() <= 0) return false;
-    exact_number next[width];
-    for (int k = 0; k + 1 < width; ++k) next[k] = (lower[0] * upper[k + 1] - upper[0] * lower[k + 1]) / lower[0];
-    for (int k = 0; k < width; ++k) {
+    if (sign(lower[0]) <= 0) return false;
+    K next[Width];
+    for (int k = 0; k + 1 < Width; ++k) next[k] = (lower[0] * upper[k + 1] - upper[0] * lower[k + 1]) / lower[0];
+    for (int k = 0; k < Width; ++k) {
       upper[k] = lower[k];
       lower[k] = next[k];
     }
   }
   return true;
+}
+constexpr bool hurwitz(const stability_polynomial& g) {
+  return routh_hurwitz<exact_number, max_stability_degree + 2>(
+      g.degree, [&](int k) { return exact_number::from_integer(g[k]); }, [](const exact_number& x) { return x.sign(); });
 }
 
 }  // namespace analysis::detail

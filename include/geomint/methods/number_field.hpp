@@ -11,6 +11,7 @@
 /// over Q) and computed in any scalar T at T's full precision by bisection in T from that
 /// rational bracket (`root_in<T>`), never through a double literal.
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -391,5 +392,33 @@ class field_element {
   field_ptr field_;
   std::vector<exact_rational> c_;
 };
+
+/// The sign of x's value, exactly: 0 iff x.is_zero(); otherwise x's polynomial is evaluated in
+/// exact interval arithmetic over the root's rational bracket, which is halved (by the sign of
+/// the field polynomial at its midpoint) until the interval of values excludes 0. It does: the
+/// value is nonzero and the interval shrinks to it.
+inline int exact_sign(const field_element& x) {
+  if (x.is_zero()) return 0;
+  const std::vector<exact_rational>& c = x.coefficients();
+  if (!x.field() || x.is_rational()) return detail::sign(x.rational_value());
+  const algebraic_field& f = *x.field();
+  exact_rational lo = f.lower(), hi = f.upper();
+  if (lo == hi) return detail::sign(detail::evaluate(c, lo));
+  const int sign_high = detail::sign(detail::evaluate(f.polynomial(), hi));  // nonzero: the root is inside
+  while (true) {
+    exact_rational low = 0, high = 0;  // Horner in intervals: [low, high] * [lo, hi] + c_i
+    for (std::size_t i = c.size(); i-- > 0;) {
+      const exact_rational p[4] = {low * lo, low * hi, high * lo, high * hi};
+      low = std::min({p[0], p[1], p[2], p[3]}) + c[i];
+      high = std::max({p[0], p[1], p[2], p[3]}) + c[i];
+    }
+    if (low > 0) return 1;
+    if (high < 0) return -1;
+    const exact_rational mid = (lo + hi) / 2;
+    const int s = detail::sign(detail::evaluate(f.polynomial(), mid));
+    if (s == 0) return detail::sign(detail::evaluate(c, mid));  // r = mid, rational after all
+    (s == sign_high ? hi : lo) = mid;
+  }
+}
 
 }  // namespace geomint::methods
