@@ -6,6 +6,12 @@
 #
 #   scripts/long_runs.sh [build-dir] [steps]      (default build/gcc, 10000000)
 #
+# The build needs, of the tools' units, the built-in systems and the circle in double; the
+# smallest such build:
+#   cmake --preset gcc -B build/long -DGEOMINT_BUILD_TESTS=OFF -DGEOMINT_BUILD_DOCS=OFF \
+#     "-DGEOMINT_TOOL_UNITS=geomint_stepper_builtin_16;geomint_run_circle_16"
+#   cmake --build build/long --target geomint-run geomint-beam
+#
 # Families: the free LPF integrator, the classical variational integrators (midpoint,
 # Galerkin), the constrained LPF integrator (circle), and the beam (per node-step: N / 100
 # steps of the 101-node beam, i.e. about N node-steps).
@@ -40,7 +46,13 @@ measure() {
   local label=$1 n=$2
   shift 2
   local out
-  out=$( { /usr/bin/time -f 'TIME %e %M' "$@" > /tmp/long_runs_out.$$ ; } 2>&1 )
+  if ! out=$( { /usr/bin/time -f 'TIME %e %M' "$@" > /tmp/long_runs_out.$$ ; } 2>&1 ); then
+    if [ -t 2 ]; then printf '\r\033[K' >&2; fi
+    echo "long_runs.sh: '$label' failed: $*" >&2
+    grep -v '^TIME\|^Command exited' <<<"$out" | head -n 3 >&2
+    rm -f /tmp/long_runs_out.$$
+    exit 1
+  fi
   local seconds rss
   seconds=$(grep '^TIME' <<<"$out" | awk '{print $2}')
   rss=$(grep '^TIME' <<<"$out" | awk '{print $3}')
