@@ -52,6 +52,8 @@
 #include "geomint/methods/tableau.hpp"
 #include "geomint/methods/composition.hpp"
 #include "geomint/methods/nystrom_form.hpp"
+#include "geomint/methods/collocation_rkn.hpp"
+#include "geomint/methods/symplectic_rounding.hpp"
 #include "geomint/methods/tableau_method.hpp"
 #include "geomint/methods/tableau_file.hpp"
 #include "geomint/methods/tableau_stepper.hpp"

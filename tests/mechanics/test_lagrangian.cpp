@@ -156,5 +156,5 @@ TEMPLATE_LIST_TEST_CASE("lagrangian: the fixed-point and Newton forms follow the
     CHECK(abs(a.q[0] - T(1)) > T(1) / T(10));
   };
   compare.template operator()<lpf_fixed_point<8>>();
-  compare.template operator()<lpf<8, gauss_interior>>();
+  compare.template operator()<lpf<8, gauss_interior, lagrange, newton_solver>>();
 }

@@ -1,4 +1,6 @@
-/// LPF on Gauss-interior nodes in the fixed-point Nystrom form (schemes/lpf_fixed_point.hpp).
+/// LPF on Gauss-interior nodes in the fixed-point Nystrom form (schemes/gauss_fixed_point.hpp, its stopping
+/// rule schemes/fixed_point_stopping.hpp and its multiprecision solve schemes/stages_in_double.hpp),
+/// as `lpf_fixed_point<m>` (schemes/lpf_fixed_point.hpp).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -121,7 +123,7 @@ TEST_CASE("lpf_fixed_point: independently rounded coefficients are not exactly s
   CHECK(v <= wide(4) * wide(std::numeric_limits<double>::epsilon()));
 }
 
-TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the same map as lpf<m, gauss_interior>", "[lpf_fixed_point]",
+TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the same map as lpf<m, gauss_interior> in its Newton form", "[lpf_fixed_point]",
                         geomint::test::integrator_scalar_types) {
   // Second method: the Newton form of the same equations (lpf.hpp, eq. 12). Ten steps of
   // Kepler (e = 1/2) from the pericentre, tau = 1/20: both solve the collocation equations
@@ -133,7 +135,7 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the same map as lpf<m, gauss_interior>
   const vec<T, 2> q0 = start.first, v0 = start.second;
   auto compare = [&]<int M>() {
     integrator<lpf_fixed_point<M>, systems::kepler, T> A(systems::kepler{}, tau);
-    integrator<lpf<M, gauss_interior>, systems::kepler, T> B(systems::kepler{}, tau);
+    integrator<lpf<M, gauss_interior, lagrange, newton_solver>, systems::kepler, T> B(systems::kepler{}, tau);
     auto a = A.initial_state(q0, v0);
     auto b = B.initial_state(q0, v0);
     A.advance(a, 10);
@@ -161,7 +163,7 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the sweep budget grows with the scalar
   const auto [q0, v0] = kepler_start<T>();
   integrator<lpf_fixed_point<2>, systems::kepler, T> A(systems::kepler{}, tau);
   A.options().double_jacobian = false;  // the sweeps (multiprecision would take Newton steps)
-  integrator<lpf<2, gauss_interior>, systems::kepler, T> B(systems::kepler{}, tau);
+  integrator<lpf<2, gauss_interior, lagrange, newton_solver>, systems::kepler, T> B(systems::kepler{}, tau);
   auto a = A.initial_state(q0, v0);
   auto b = B.initial_state(q0, v0);
   const step_status st = A.try_step(a);
@@ -257,7 +259,7 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: Newton steps with the matrix in double
     std::tie(q[k], p[k], iterations[k]) =
         kepler_20_steps<T>([&](newton_options<T>& o) { o.double_jacobian = in_double; });
   }
-  integrator<lpf<8, gauss_interior>, systems::kepler, T> N(systems::kepler{}, T(1) / T(8));
+  integrator<lpf<8, gauss_interior, lagrange, newton_solver>, systems::kepler, T> N(systems::kepler{}, T(1) / T(8));
   auto n = N.initial_state(q0, v0);
   N.advance(n, 20);
   INFO("iterations: sweeps " << iterations[0] << ", Newton " << iterations[1]);
@@ -288,7 +290,7 @@ TEST_CASE("lpf_fixed_point: multiprecision steps start from the stage equations 
   integrator<lpf_fixed_point<16>, systems::pendulum, T> A(systems::pendulum{}, tau);
   integrator<lpf_fixed_point<16>, systems::pendulum, T> B(systems::pendulum{}, tau);
   B.options().double_jacobian = false;
-  integrator<lpf<16, gauss_interior>, systems::pendulum, T> N(systems::pendulum{}, tau);
+  integrator<lpf<16, gauss_interior, lagrange, newton_solver>, systems::pendulum, T> N(systems::pendulum{}, tau);
   auto a = A.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));
   auto b = a;
   auto c = N.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(0)));

@@ -24,7 +24,7 @@ using geomint::test::eps_tol;
 namespace step_skeleton_test {
 using T = boost::multiprecision::cpp_bin_float_50;
 using solar = zoo::outer_solar;
-using scheme = lpf<8, gauss_interior>;
+using scheme = lpf<8, gauss_interior, lagrange, newton_solver>;  // the step skeleton's Newton form
 using solar_integrator = integrator<scheme, solar, T>;
 using solar_state = typename solar_integrator::state;
 

@@ -1,7 +1,7 @@
 /// geomint-brouwer: how the round-off of the energy grows over long runs in double (Brouwer's
 /// law: like t^(1/2) for a random walk, like t for a systematic drift), for LPF m = 8 on
 /// Gauss-interior nodes in its Newton form (schemes/lpf.hpp) and in its fixed-point form with
-/// exactly symplectic coefficients (schemes/lpf_fixed_point.hpp), each with plain and with
+/// exactly symplectic coefficients (schemes/gauss_fixed_point.hpp), each with plain and with
 /// compensated summation of the update. Every configuration runs the same ensemble of initial
 /// states; the table gives the growth exponent of the ensemble RMS of |E - E0| per window
 /// (tools/common/energy_growth.hpp), from step 2^10 and from step 2^16 on.
@@ -81,7 +81,7 @@ std::vector<result> run_all(long steps, int trajectories, double tau) {
   std::vector<result> all;
   tools::progress bar("geomint-brouwer", static_cast<std::size_t>(4 * trajectories * steps), "steps");
   for (bool compensated : {false, true}) {
-    all.push_back(measure<lpf<8, gauss_interior>, Sys>("lpf m = 8, Newton form", compensated, steps, trajectories, tau, bar));
+    all.push_back(measure<lpf<8, gauss_interior, lagrange, newton_solver>, Sys>("lpf m = 8, Newton form", compensated, steps, trajectories, tau, bar));
     all.push_back(measure<lpf_fixed_point<8>, Sys>("lpf m = 8, fixed-point form", compensated, steps, trajectories, tau, bar));
   }
   return all;

@@ -52,9 +52,11 @@ void add_peers(std::vector<method<T, P::n>>& all, double steps_scale = 1) {
   all.push_back(taylor_method<P, T>("taylor-series"));
 }
 
-/// The outer solar system (18 dof): LPF's fixed-point form up to m = 16, and the Newton forms
-/// only while their (18 m)^2 Newton matrix stays within Eigen's fixed-size stack limit (double:
-/// lpf m = 4, 6 and galerkin m = 4; none in 50 digits, where the first one would be m = 2).
+/// The outer solar system (18 dof): LPF's fixed-point form up to m = 16, and the schemes with a
+/// Newton form only while their (18 m)^2 Newton matrix stays within Eigen's fixed-size stack
+/// limit (double: lpf m = 4, 6, whose default solver takes the fixed-point form's steps with
+/// Newton for a step beyond its reach, and galerkin m = 4; none in 50 digits, where the first
+/// one would be m = 2).
 template <class P, class T, bool multiprecision>
 std::vector<method<T, P::n>> methods_large(bool compensated) {
   using namespace geomint;

@@ -43,6 +43,7 @@
 #include "geomint/core/big_rational.hpp"
 #include "geomint/core/nodes.hpp"
 #include "geomint/core/rational.hpp"
+#include "geomint/methods/collocation_rkn.hpp"
 
 namespace geomint {
 
@@ -689,11 +690,26 @@ numeric_rkn_tableau<T> numeric_tableau(const exact_rkn_tableau& t, const T* node
   return out;
 }
 
-/// The numeric tableau of LPF (m, Family) in T, with the family's nodes from core/nodes.hpp.
+/// The numeric tableau of LPF (m, Family) in T: the collocation method on the family's interior
+/// nodes (core/nodes.hpp), by the construction the schemes use (methods/collocation_rkn.hpp; no
+/// Vandermonde solve, every entry to a few ulps of T).
 template <int M, class Family, class T>
 numeric_rkn_tableau<T> lpf_numeric_tableau() {
+  static_assert(M >= 2 && M - 1 <= max_exact_stages, "geomint::lpf_numeric_tableau: m must be 2..9");
+  constexpr int S = M - 1;
   const auto c = nodes<Family, M, T>();
-  return numeric_tableau<T>(lpf_tableau<M, Family>(), c.data() + 1);
+  std::array<T, S> interior;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) interior[i] = c[i + 1];
+  const methods::rkn<T, S> t = methods::collocation_rkn<T, S>(interior);
+  numeric_rkn_tableau<T> out;
+  out.stages = S;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) {
+    out.c[i] = t.c[i];
+    out.bbar[i] = t.bbar[i];
+    out.b[i] = t.b[i];
+    for (std::size_t j = 0; j < static_cast<std::size_t>(S); ++j) out.a[i][j] = t.a[i][j];
+  }
+  return out;
 }
 /// The numeric tableau of the Galerkin VI of degree m in T (Gauss nodes from core/nodes.hpp).
 template <int M, class T>

@@ -148,7 +148,8 @@ struct selection {
 /// The lines of a study's usage text that name its selection over the systems `names`.
 inline std::string selection_usage(const std::vector<std::string>& names) {
   return "  systems: " + comma_list(names) + " (all); initial data as run\n"
-         "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems)\n"
+         "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems;\n"
+         "           kept for one release: lpf on gauss-interior takes its steps on natural systems)\n"
          "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n";
 }
 

@@ -99,7 +99,7 @@ constexpr std::array<T, N> lagrange_values_at(const std::array<T, N>& c, const T
 
 /// l_j(t), j = 0..N-1, for the Lagrange polynomials on any N distinct nodes c (not only a
 /// family's), at any t: the barycentric formula above, for code that holds its own nodes
-/// (e.g. the Gauss stages of schemes/lpf_fixed_point.hpp).
+/// (e.g. the stages of methods/collocation_rkn.hpp).
 template <class T, std::size_t N>
 constexpr std::array<T, N> lagrange_values_at(const std::array<T, N>& c, const T& t) {
   return core::detail::lagrange_values_at(c, t);

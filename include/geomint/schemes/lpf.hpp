@@ -10,40 +10,23 @@
 /// eq. (12) and dL/dxdot(t_k) = p_k, then p_{k+1} = dL/dxdot(t_{k+1}).
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
-#include "geomint/core/quadrature.hpp"
+#include "geomint/methods/collocation_rkn.hpp"
+#include "geomint/schemes/gauss_fixed_point.hpp"
 #include "geomint/schemes/path_method.hpp"
 
 namespace geomint {
 namespace schemes::detail {
 
-/// b_i = int_0^1 l_i(s) ds and beta_i = int_0^1 (1 - s) l_i(s) ds for the Lagrange polynomials
-/// l_i on the interior nodes c_1..c_{m-1} (degree m-2), by the (m-1)-point Gauss-Legendre rule
-/// (exact to degree 2m-3 >= m-1).
-template <class T, int M>
-void interior_quadrature(const std::array<T, M + 1>& c, std::array<T, M - 1>& b, std::array<T, M - 1>& beta) {
-  const auto rule = gauss_legendre_rule<M - 1, T>();
-  b.fill(T(0));
-  beta.fill(T(0));
-  for (int k = 0; k < M - 1; ++k) {
-    const T gk = rule.points[static_cast<std::size_t>(k)];
-    const T w = rule.weights[static_cast<std::size_t>(k)];
-    for (int i = 1; i < M; ++i) {
-      T l(1);
-      for (int j = 1; j < M; ++j)
-        if (j != i)
-          l *= (gk - c[static_cast<std::size_t>(j)]) / (c[static_cast<std::size_t>(i)] - c[static_cast<std::size_t>(j)]);
-      b[static_cast<std::size_t>(i - 1)] += w * l;
-      beta[static_cast<std::size_t>(i - 1)] += w * (T(1) - gk) * l;
-    }
-  }
-}
-
-/// "lpf(m=4, gauss-interior, lagrange)": one function for every (m, family, basis).
-inline std::string lpf_name(int m, std::string_view family, std::string_view basis) {
-  return "lpf(m=" + std::to_string(m) + ", " + std::string(family) + ", " + std::string(basis) + ")";
+/// "lpf(m=4, gauss-interior, lagrange)": one function for every (m, family, basis); a solver
+/// chosen explicitly is named last: "lpf(m=4, gauss-interior, lagrange, newton)".
+inline std::string lpf_name(int m, std::string_view family, std::string_view basis, std::string_view solver = {}) {
+  return "lpf(m=" + std::to_string(m) + ", " + std::string(family) + ", " + std::string(basis) +
+         (solver.empty() ? std::string() : ", " + std::string(solver)) + ")";
 }
 
 /// One LPF step as a method of the step skeleton (step_skeleton.hpp, path_method.hpp). The unknowns are the
@@ -66,7 +49,13 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
   using typename base::Z;
 
   lpf_method(const Sys& sys, const weights& w) : base(sys, w) {
-    interior_quadrature<T, M>(w_.c, quad_b_, quad_beta_);
+    // b_i = int_0^1 l_i and beta_i = int_0^1 (1 - s) l_i for the Lagrange polynomials l_i on the
+    // interior nodes: the weights b and bbar of the collocation method on them.
+    std::array<T, M - 1> interior;
+    for (int i = 1; i < M; ++i) interior[static_cast<std::size_t>(i - 1)] = w_.c[static_cast<std::size_t>(i)];
+    const methods::rkn<T, M - 1> tableau = methods::collocation_rkn<T, M - 1>(interior);
+    quad_b_ = tableau.b;
+    quad_beta_ = tableau.bbar;
     if constexpr (natural_system<Sys>) minv_ = inverse_of<T, n>(Sys::template mass_matrix<T>());
   }
 
@@ -198,29 +187,152 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
   mat<T, n> minv_ = mat<T, n>::Zero();  // M^{-1} (natural systems)
 };
 
+/// The engine of LPF on a natural system in the Lagrange basis with the default solver: the
+/// Newton form (the step skeleton over lpf_method) for every node family, and on Gauss-interior
+/// nodes the fixed-point form in front of it (gauss_fixed_point.hpp): the same map, solved
+/// without a Jacobian in a fraction of the time. A step the fixed-point form cannot take (beyond
+/// the sweeps' reach, where the map is no contraction) is taken by Newton. One type for every
+/// node family (`skeleton_type`: the steppers of the families share its code); the family is
+/// data, as the nodes in the path weights.
+template <class Sys, class T, int M>
+class lpf_natural_engine {
+  using newton_engine = step_skeleton<lpf_method<Sys, T, M, lagrange>>;
+  using fixed_point_engine = gauss_fixed_point_engine<Sys, T, M>;
+
+ public:
+  using skeleton_type = lpf_natural_engine;
+  using method_type = lpf_method<Sys, T, M, lagrange>;
+  static constexpr int n = Sys::dof;
+  using V = vec<T, n>;
+  /// The path increments (as the Newton form's), so that dense output works with either solver.
+  using unknowns = typename newton_engine::unknowns;
+
+  lpf_natural_engine(const Sys& sys, const path_weights<T, M, lagrange>& w, bool gauss_nodes)
+      : newton_(method_type(sys, w)) {
+    if (gauss_nodes) fixed_point_.emplace(sys);
+  }
+
+  const method_type& method() const { return newton_.method(); }
+  /// Whether steps are taken by the fixed-point form (Gauss-interior nodes).
+  bool fixed_point() const { return fixed_point_.has_value(); }
+
+  /// One step (as step_skeleton::one_step): the fixed-point form where it applies and
+  /// converges, else Newton. `solution` receives the path increments either way.
+  step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt,
+                       unknowns* solution = nullptr, phase_carry<T, n>* carry = nullptr) const {
+    if (fixed_point_) {
+      typename fixed_point_engine::unknowns F;
+      const std::optional<phase_carry<T, n>> start = carry ? std::optional<phase_carry<T, n>>(*carry) : std::nullopt;
+      const step_status st = fixed_point_->one_step(q, p, tau, q1, p1, opt, solution ? &F : nullptr, carry);
+      if (st) {
+        if (solution) {
+          const auto Y = fixed_point_->path_increments(p, tau, F, start ? &*start : nullptr);
+          for (int j = 1; j <= M; ++j) solution->template segment<n>((j - 1) * n) = Y[static_cast<std::size_t>(j - 1)];
+        }
+        return st;
+      }
+    }
+    return newton_.one_step(q, p, tau, q1, p1, opt, solution, carry);
+  }
+
+  /// The two-step form's momentum at the end of the path through x0 and x1 (Newton, eq. 10-12).
+  step_status end_momentum(const V& x0, const V& x1, const T& tau, V& p1, const newton_options<T>& opt) const {
+    return newton_.end_momentum(x0, x1, tau, p1, opt);
+  }
+
+ private:
+  newton_engine newton_;
+  std::optional<fixed_point_engine> fixed_point_;
+};
+
 }  // namespace schemes::detail
 
-/// The LPF scheme of degree m on a node family in a basis: `lpf<4, gauss_interior, lagrange>`.
-template <int M, class Family = equispaced, class Basis = lagrange>
+/// How an LPF step solves its equations: the fourth parameter of `lpf`.
+/// - `default_solver`, the fastest correct choice: on a natural system with Gauss-interior
+///   nodes in the Lagrange basis the fixed-point form (schemes/gauss_fixed_point.hpp), Newton
+///   for a step beyond its reach; simplified Newton on the path otherwise;
+/// - `newton_solver`: simplified Newton on the path increments (step_skeleton.hpp), for every
+///   system, node family and basis;
+/// - `fixed_point_solver`: the fixed-point form alone (natural systems, Gauss-interior nodes;
+///   a step beyond its reach fails: step_failure::no_convergence).
+struct default_solver {
+  static constexpr std::string_view name{};
+};
+struct newton_solver {
+  static constexpr std::string_view name = "newton";
+};
+struct fixed_point_solver {
+  static constexpr std::string_view name = "fixed-point";
+};
+template <class Solver>
+concept lpf_solver = std::is_same_v<Solver, default_solver> || std::is_same_v<Solver, newton_solver> ||
+                     std::is_same_v<Solver, fixed_point_solver>;
+
+namespace schemes::detail {
+/// The Newton form: the step skeleton over lpf_method.
+template <class Sys, class T, int M, class Family, class Basis>
+struct lpf_newton_engine : step_skeleton<lpf_method<Sys, T, M, Basis>> {
+  explicit lpf_newton_engine(const Sys& sys)
+      : step_skeleton<lpf_method<Sys, T, M, Basis>>(
+            lpf_method<Sys, T, M, Basis>(sys, path_weights<T, M, Basis>::template make<Family>())) {}
+};
+/// The default solver on a natural system in the Lagrange basis (lpf_natural_engine).
+template <class Sys, class T, int M, class Family>
+struct lpf_default_engine : lpf_natural_engine<Sys, T, M> {
+  explicit lpf_default_engine(const Sys& sys)
+      : lpf_natural_engine<Sys, T, M>(sys, path_weights<T, M, lagrange>::template make<Family>(),
+                                      std::is_same_v<Family, gauss_interior>) {}
+};
+/// The fixed-point form alone.
+template <class Sys, class T, int M>
+struct lpf_fixed_point_engine : gauss_fixed_point_engine<Sys, T, M> {
+  static_assert(natural_system<Sys>,
+                "geomint::lpf (fixed_point_solver): the fixed-point form needs a natural system (derived from "
+                "geomint::natural, with a static potential and a constant mass matrix); use lpf<m, gauss_interior> "
+                "(its default solver) for other Lagrangians");
+  explicit lpf_fixed_point_engine(const Sys& sys) : gauss_fixed_point_engine<Sys, T, M>(sys) {}
+};
+/// The engine of lpf<M, Family, Basis, Solver> on Sys in T.
+template <class Sys, class T, int M, class Family, class Basis, class Solver>
+struct lpf_engine_of {
+  using type = lpf_newton_engine<Sys, T, M, Family, Basis>;
+};
+template <class Sys, class T, int M, class Family, class Basis>
+  requires(natural_system<Sys> && std::is_same_v<Basis, lagrange>)
+struct lpf_engine_of<Sys, T, M, Family, Basis, default_solver> {
+  using type = lpf_default_engine<Sys, T, M, Family>;
+};
+template <class Sys, class T, int M, class Family, class Basis>
+struct lpf_engine_of<Sys, T, M, Family, Basis, fixed_point_solver> {
+  using type = lpf_fixed_point_engine<Sys, T, M>;
+};
+}  // namespace schemes::detail
+
+/// The LPF scheme of degree m on a node family in a basis, solved by `Solver` (above; the
+/// default is the fastest correct one): `lpf<4, gauss_interior, lagrange>`.
+template <int M, class Family = equispaced, class Basis = lagrange, class Solver = default_solver>
 struct lpf {
   static_assert(M >= 2, "geomint::lpf: m must be >= 2 (eq. 12 needs at least one interior node)");
   static_assert(M <= max_floating_m, "geomint::lpf: m must be <= max_floating_m (16)");
   static_assert(node_family<Family>,
                 "geomint::lpf: Family must be equispaced, gauss_lobatto, chebyshev_lobatto or gauss_interior");
   static_assert(basis_kind<Basis>, "geomint::lpf: Basis must be lagrange or bernstein");
+  static_assert(lpf_solver<Solver>, "geomint::lpf: Solver must be default_solver, newton_solver or fixed_point_solver");
+  static_assert(!std::is_same_v<Solver, fixed_point_solver> ||
+                    (std::is_same_v<Family, gauss_interior> && std::is_same_v<Basis, lagrange>),
+                "geomint::lpf: fixed_point_solver needs Gauss-interior nodes in the Lagrange basis");
   static constexpr int m = M;
   using family = Family;
   using basis = Basis;
-  static std::string name() { return schemes::detail::lpf_name(M, Family::name, Basis::name); }
+  using solver = Solver;
+  static std::string name() { return schemes::detail::lpf_name(M, Family::name, Basis::name, Solver::name); }
 
-  /// The method behind the step skeleton, and the engine the integrator drives.
+  /// The method behind the Newton form's step skeleton, and the engine the integrator drives.
   template <class Sys, class T>
   using method = schemes::detail::lpf_method<Sys, T, M, Basis>;
   template <class Sys, class T>
-  struct engine : schemes::detail::step_skeleton<method<Sys, T>> {
-    explicit engine(const Sys& sys)
-        : schemes::detail::step_skeleton<method<Sys, T>>(
-              method<Sys, T>(sys, schemes::detail::path_weights<T, M, Basis>::template make<Family>())) {}
+  struct engine : schemes::detail::lpf_engine_of<Sys, T, M, Family, Basis, Solver>::type {
+    explicit engine(const Sys& sys) : schemes::detail::lpf_engine_of<Sys, T, M, Family, Basis, Solver>::type(sys) {}
   };
 };
 

@@ -16,7 +16,7 @@
 ///  - galerkin_vi<m> (with m-point Gauss quadrature it is the m-stage Gauss collocation method;
 ///    Hairer, Lubich, Wanner, Geometric Numerical Integration, 2nd ed. (2006), Theorem VI.6.4):
 ///    2m + 1;
-///  - lpf<m>, lpf_fixed_point<m>, constrained_lpf<m> (order 2(m - 1) on Gauss-interior nodes;
+///  - lpf<m> (any solver), lpf_fixed_point<m>, constrained_lpf<m> (order 2(m - 1) on Gauss-interior nodes;
 ///    lower on other nodes, whose bound stays that of the degree): 2(m - 1) + 1 = 2m - 1;
 ///  - trapezoidal_vi (Stormer-Verlet on natural systems): 2, its interval of linear stability
 ///    (|tau omega| < 2, ibid. section I.5; its phase error reaches one radian only beyond it).
@@ -51,8 +51,8 @@ template <int M, class Family, class Basis>
 struct resolution_bound<galerkin_vi<M, Family, Basis>> {
   static constexpr int value = 2 * M + 1;
 };
-template <int M, class Family, class Basis>
-struct resolution_bound<lpf<M, Family, Basis>> {
+template <int M, class Family, class Basis, class Solver>
+struct resolution_bound<lpf<M, Family, Basis, Solver>> {
   static constexpr int value = 2 * M - 1;
 };
 template <int M>

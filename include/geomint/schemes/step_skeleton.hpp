@@ -230,7 +230,7 @@ class try_lock_flag {
 /// Where an engine's last step ended (q1, p1 with step tau), to recognise a step that continues
 /// it. Guarded by a try-lock (`busy`): a call that finds it busy (the same engine used from
 /// another thread) simply does not use it. A copy starts empty. Engines derive from it and add
-/// what they carry over (step_memory below, schemes/lpf_fixed_point.hpp).
+/// what they carry over (step_memory below, schemes/gauss_fixed_point.hpp).
 template <class T, int n>
 struct step_continuation {
   std::atomic_flag busy;  // clear on construction (C++20)
