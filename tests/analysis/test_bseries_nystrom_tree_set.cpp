@@ -115,13 +115,7 @@ TEST_CASE("nystrom tree set: elementary weights are those of the partitioned for
   nystrom4.ap = {{q(0), q(0), q(0), q(0)}, {q(1, 2), q(0), q(0), q(0)}, {q(0), q(1, 2), q(0), q(0)}, {q(0), q(0), q(1), q(0)}};
   nystrom4.bbar = {q(1, 6), q(1, 6), q(1, 6), q(0)};
   nystrom4.b = {q(1, 6), q(1, 3), q(1, 3), q(1, 6)};
-  tableau verlet;
-  verlet.kind = geomint::methods::method_kind::rkn;
-  verlet.stages = 2;
-  verlet.c = {q(0), q(1)};
-  verlet.a = {{q(0), q(0)}, {q(1, 2), q(0)}};
-  verlet.bbar = {q(1, 2), q(0)};
-  verlet.b = {q(1, 2), q(1, 2)};
+  const tableau verlet = verlet_rkn();
   const struct {
     tableau method;
     int order;

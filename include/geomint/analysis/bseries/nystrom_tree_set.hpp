@@ -44,6 +44,7 @@
 #include <utility>
 #include <vector>
 
+#include "geomint/analysis/bseries/trees.hpp"
 #include "geomint/methods/nystrom_form.hpp"
 
 namespace geomint::analysis::bseries {
@@ -126,14 +127,7 @@ class nystrom_tree_set {
     t.order = n;
     t.fat = fat;
     t.sons = sons;
-    t.gamma = n;
-    std::int64_t run = 0;
-    for (std::size_t i = 0; i < sons.size(); ++i) {
-      const n_tree& u = trees_[static_cast<std::size_t>(sons[i])];
-      t.gamma *= u.gamma;
-      run = (i > 0 && sons[i] == sons[i - 1]) ? run + 1 : 1;
-      t.sigma *= run * u.sigma;  // (multiplicity)! built up one factor per repeat
-    }
+    detail::set_symmetry_and_density(t, n, sons, trees_);
     index_.emplace(std::make_pair(fat, sons), size());
     trees_.push_back(std::move(t));
   }
