@@ -55,14 +55,15 @@ bool rkn_symplectic(const methods::nystrom_form<K>& f) {
 }  // namespace detail
 
 namespace detail {
-/// The order of the series a over the trees marked in `wanted` (sorted by order).
-template <class K>
-void order_of(const tree_set& trees, const std::vector<K>& a, const std::vector<bool>& wanted, method_analysis& r) {
-  const std::vector<K> err = local_error_coefficients(trees, a);
+/// The order from the local error coefficients `err` of trees sorted by order (a tree_set or a
+/// nystrom_tree_set): one less than the order of the first tree with a nonzero one, else
+/// r.tree_order as a lower bound.
+template <class Trees, class K>
+void order_of(const Trees& trees, const std::vector<K>& err, method_analysis& r) {
   r.order = r.tree_order;
   r.order_is_lower_bound = true;
   for (int t = 0; t < trees.size(); ++t) {
-    if (!wanted[static_cast<std::size_t>(t)] || err[static_cast<std::size_t>(t)] == K(0)) continue;
+    if (err[static_cast<std::size_t>(t)] == K(0)) continue;
     r.order = trees[t].order - 1;
     r.order_is_lower_bound = false;
     return;
@@ -79,15 +80,7 @@ method_analysis analyse_method(const methods::nystrom_form<K>& f, int order_two_
   r.colours = 2;  // N-trees have two kinds of vertices
   r.tree_order = order_two_colours;
   const nystrom_tree_set trees(r.tree_order, !f.has_velocity_stages);
-  const std::vector<K> err = local_error_coefficients(trees, f);
-  r.order = r.tree_order;
-  r.order_is_lower_bound = true;
-  for (int t = 0; t < trees.size(); ++t)
-    if (!(err[static_cast<std::size_t>(t)] == K(0))) {
-      r.order = trees[t].order - 1;
-      r.order_is_lower_bound = false;
-      break;
-    }
+  detail::order_of(trees, local_error_coefficients(trees, f), r);
   r.symplectic = detail::rkn_symplectic(f);
   r.symplecticity_basis = "RKN conditions (exact)";
   return r;
@@ -105,7 +98,7 @@ method_analysis analyse_method(const tableau_data<K>& t, int order_one_colour = 
   r.tree_order = r.colours == 1 ? order_one_colour : order_two_colours;
   const tree_set trees(r.tree_order, r.colours);
   const std::vector<K> a = elementary_weights(trees, t);
-  detail::order_of(trees, a, std::vector<bool>(static_cast<std::size_t>(trees.size()), true), r);
+  detail::order_of(trees, local_error_coefficients(trees, a), r);
   r.symplectic = check_symplecticity_conditions(trees, modified_field(trees, a)).holds;
   r.symplecticity_basis = "tree conditions up to order " + std::to_string(r.tree_order);
   return r;
