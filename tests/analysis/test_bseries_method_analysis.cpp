@@ -110,13 +110,7 @@ TEST_CASE("bseries partitioned form: Stormer-Verlet as an RKN is Lobatto IIIA-II
   // Stormer-Verlet as an RKN (HLW section I.1.4) and as the pair Lobatto IIIA (q) - IIIB (v)
   // (HLW section II.2.2) are the same map on q' = v, v' = f(q): their P-series agree on every
   // tree whose elementary differential does not vanish there.
-  tableau verlet;
-  verlet.kind = geomint::methods::method_kind::rkn;
-  verlet.stages = 2;
-  verlet.c = {q(0), q(1)};
-  verlet.a = {{q(0), q(0)}, {q(1, 2), q(0)}};
-  verlet.bbar = {q(1, 2), q(0)};
-  verlet.b = {q(1, 2), q(1, 2)};
+  const tableau verlet = verlet_rkn();
   const tree_set trees(7, 2);  // 2 x 2 659 P-trees (to order 8: 2 x 12 157, the cost of this check x 4.6)
   const auto converted = elementary_weights(trees, partitioned_form_of(verlet));
   const auto lobatto = elementary_weights(trees, pair_of(lobatto_iiia_2(), lobatto_iiib_2()));

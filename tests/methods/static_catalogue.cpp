@@ -50,6 +50,17 @@ static_assert(symplecticity(exact_tableau<methods::ruth3>).symplectic);
 static_assert(!symmetry(exact_tableau<methods::ruth3>).symmetric);
 static_assert(linear_stability(exact_tableau<methods::ruth3>).determinant_is_one);  // symplectic: det M = 1
 
+// A splitting that starts with a drift (kick_drift_rkn's first_drift, as McLachlan's SB3A
+// methods do; those have irrational drifts and are checked at run time, test_catalogue.cpp):
+// drift h/2, kick h, drift h/2 is position Stormer-Verlet, c = 1/2, a = 0, bbar = 1/2, b = 1
+// (Hairer, Lubich & Wanner 2006, section I.1.4): order 2, symplectic, symmetric.
+constexpr auto position_verlet = methods::detail::kick_drift_rkn<rational, 1>({rational(1)}, {rational(1, 2)}, rational(1, 2));
+static_assert(position_verlet.c[0] == rational(1, 2) && position_verlet.a[0][0] == rational(0));
+static_assert(position_verlet.bbar[0] == rational(1, 2) && position_verlet.b[0] == rational(1));
+static_assert(order_analysis(exact_of(position_verlet)).order == 2 && !order_analysis(exact_of(position_verlet)).order_is_lower_bound);
+static_assert(symplecticity(exact_of(position_verlet)).symplectic);
+static_assert(symmetry(exact_of(position_verlet)).symmetric);
+
 // Dormand, El-Mikkawy & Prince 1987: RKN4(3)4FM has orders 4 and 3, RKN6(4)6FM 6 and 4;
 // they are not constructed to be symplectic, and Suris' conditions fail, so det M != 1 on
 // y'' = -y.

@@ -8,6 +8,8 @@
 ///   pair an entry), Nystrom's classical order-4 method (nystrom kind).
 /// - Compositions over Q(2^(1/3)) (methods/composition.hpp): Forest-Ruth, Yoshida's triple
 ///   jump, Suzuki's fractal order-4 method.
+/// - Splittings over a quadratic field: McLachlan's symmetric order-4 RKN methods SB3A with 4 and
+///   5 force evaluations.
 /// - The collocation-type families (methods/collocation_families.hpp): Gauss, Radau IIA, Radau
 ///   IA, Lobatto IIIA, IIIB, IIIC and the IIIA-IIIB pair.
 ///
@@ -30,23 +32,23 @@
 namespace geomint::methods {
 
 namespace detail {
-/// The explicit RKN method of a splitting kick b_1, drift d_1, ..., kick b_s, drift d_s
-/// (sum d = 1, as H = T(p) + V(q) with T quadratic): the i-th force is evaluated at
-/// c_i = d_1 + ... + d_{i-1}, and the velocity of kick j drifts for (c_i - c_j) h before it,
-/// so a_ij = b_j (c_i - c_j) (j < i) and bbar_j = b_j (1 - c_j) (Hairer, Lubich & Wanner 2006,
-/// section V.3.2).
-template <std::size_t S>
-constexpr rkn<rational, static_cast<int>(S)> kick_drift_rkn(const rational (&kick)[S], const rational (&drift)[S]) {
-  rkn<rational, static_cast<int>(S)> t{};
-  rational position(0);
+/// The explicit RKN method of a splitting (drift d_0,) kick b_1, drift d_1, ..., kick b_s,
+/// drift d_s (sum d = 1, as H = T(p) + V(q) with T quadratic; d_0 = `first_drift`, 0 unless
+/// the method starts with a drift): the i-th force is evaluated at c_i = d_0 + ... + d_{i-1},
+/// and the velocity of kick j drifts for (c_i - c_j) h before it, so a_ij = b_j (c_i - c_j)
+/// (j < i) and bbar_j = b_j (1 - c_j) (Hairer, Lubich & Wanner 2006, section V.3.2).
+template <class K, std::size_t S>
+constexpr rkn<K, static_cast<int>(S)> kick_drift_rkn(const K (&kick)[S], const K (&drift)[S], const K& first_drift = K(0)) {
+  rkn<K, static_cast<int>(S)> t{};
+  K position = first_drift;
   for (std::size_t i = 0; i < S; ++i) {
     t.c[i] = position;
     position = position + drift[i];
   }
   for (std::size_t i = 0; i < S; ++i) {
     t.b[i] = kick[i];
-    t.bbar[i] = kick[i] * (rational(1) - t.c[i]);
-    for (std::size_t j = 0; j < i; ++j) t.a[i][j] = kick[j] * (t.c[i] - t.c[j]);
+    t.bbar[i] = kick[i] * (K(1) - t.c[i]);
+    for (std::size_t j = 0; j < S; ++j) t.a[i][j] = j < i ? kick[j] * (t.c[i] - t.c[j]) : K(0);
   }
   return t;
 }
@@ -90,7 +92,7 @@ struct stormer_verlet {
 struct ruth3 {
   static constexpr std::string_view name() { return "ruth-3"; }
   static constexpr auto tableau() {
-    return detail::kick_drift_rkn<3>({rational(7, 24), rational(3, 4), rational(-1, 24)}, {rational(2, 3), rational(-2, 3), rational(1)});
+    return detail::kick_drift_rkn({rational(7, 24), rational(3, 4), rational(-1, 24)}, {rational(2, 3), rational(-2, 3), rational(1)});
   }
 };
 
@@ -189,6 +191,43 @@ struct suzuki4 {
   }
 };
 
+/// McLachlan's symmetric order-4 RKN methods "SB3A" with m = 4 and m = 5 force evaluations
+/// (McLachlan 1995, SIAM J. Sci. Comput. 16, 151-168): splittings that start and end with a
+/// drift, drifts (a_1, a_2, ..., a_2, a_1) around kicks (b_1, ..., b_1). Symplectic, symmetric,
+/// order 4 on q'' = f(q). The coefficients as transcribed to 20 digits in Principia
+/// (mockingbirdnest/Principia, integrators/methods.hpp, McLachlan1995SB3A4 and
+/// McLachlan1995SB3A5); the exact values here agree with every printed digit and are the
+/// solutions of the order conditions (docs/references.md):
+/// - m = 4: kicks (1, -1/2, -1/2, 1), drifts a_1 = 1/2 - sqrt 14/12 = 0.188195217768838...,
+///   a_2 = sqrt 14/12 - 1/3, a_3 = 2/3 (a_1, a_2 the roots of 72 x^2 - 72 x + 11 and
+///   72 x^2 + 48 x + 1 nearest the printed values);
+/// - m = 5: kicks (-3/73, 17/59, 2179/4307, 17/59, -3/73) (the printed 20 digits are these
+///   fractions'), drifts (a_1, a_2, a_3, a_3, a_2, a_1) with a_3 = 1/2 - a_1 - a_2, in
+///   Q(sqrt 722025967665): the root of the two order-3 conditions nearest the printed
+///   a_1 = 0.4051886183952522772, a_2 = -0.2871440408165240890 (the other root of that
+///   quadratic system is a_1 = -0.670...).
+struct mclachlan_sb3a4 {
+  static constexpr std::string_view name() { return "mclachlan-sb3a-4"; }
+  static auto tableau() {
+    using detail::exact;
+    const field_element r = field_element::generator(algebraic_field::make({exact_rational(-14), 0, 1}));
+    const field_element a1 = exact(1, 2) - r / exact(12), a2 = r / exact(12) - exact(1, 3);
+    return detail::kick_drift_rkn<field_element, 4>({exact(1), exact(-1, 2), exact(-1, 2), exact(1)}, {a2, exact(2, 3), a2, a1}, a1);
+  }
+};
+struct mclachlan_sb3a5 {
+  static constexpr std::string_view name() { return "mclachlan-sb3a-5"; }
+  static auto tableau() {
+    using detail::exact;
+    const field_element r = field_element::generator(algebraic_field::make({exact_rational(-722025967665LL), 0, 1}));
+    const field_element a1 = exact(-229483763, 1729961856) + exact(365, 576653952) * r;
+    const field_element a2 = exact(18550249, 123568704) - exact(1081, 2100667968) * r;
+    const field_element a3 = exact(1, 2) - a1 - a2;
+    const field_element b1 = exact(-3, 73), b2 = exact(17, 59);
+    return detail::kick_drift_rkn<field_element, 5>({b1, b2, exact(2179, 4307), b2, b1}, {a2, a3, a3, a2, a1}, a1);
+  }
+};
+
 /// One method of the catalogue by name, with the properties its source publishes.
 struct catalogue_entry {
   std::string name;     ///< the name geomint-scheme --scheme takes
@@ -259,10 +298,10 @@ inline std::vector<catalogue_entry> make_catalogue() {
     const char* source;
   };
   const family families[] = {
-      {collocation_family::gauss, "gauss", "Gauss", 2, 3, 0, true, true,
+      {collocation_family::gauss, "gauss", "Gauss", 2, 5, 0, true, true,
        "Butcher 1964; Hairer & Wanner II, section IV.5; Hairer, Lubich & Wanner, sections V.2 and VI.4"},
-      {collocation_family::radau_iia, "radau-iia", "Radau IIA", 2, 3, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
-      {collocation_family::radau_ia, "radau-ia", "Radau IA", 2, 3, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
+      {collocation_family::radau_iia, "radau-iia", "Radau IIA", 2, 4, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
+      {collocation_family::radau_ia, "radau-ia", "Radau IA", 2, 4, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
       {collocation_family::lobatto_iiia, "lobatto-iiia", "Lobatto IIIA", 2, 5, -2, false, true,
        "Ehle 1969; Hairer & Wanner II, section IV.5; Hairer, Lubich & Wanner, sections II.1.4 and V.2"},
       {collocation_family::lobatto_iiib, "lobatto-iiib", "Lobatto IIIB", 2, 5, -2, false, true,
@@ -303,6 +342,10 @@ inline std::vector<catalogue_entry> make_catalogue() {
   out.push_back(explicit_entry<forest_ruth>("Forest-Ruth", "Forest & Ruth 1990", 4, true, true));
   out.push_back(explicit_entry<yoshida_triple_jump>("Yoshida's triple jump", "Yoshida 1990", 4, true, true));
   out.push_back(explicit_entry<suzuki4>("Suzuki's fractal order 4", "Suzuki 1990", 4, true, true));
+  out.push_back(explicit_entry<mclachlan_sb3a4>("McLachlan's SB3A, m = 4 (order 4)", "McLachlan 1995 (coefficients as transcribed in Principia)",
+                                                4, true, true));
+  out.push_back(explicit_entry<mclachlan_sb3a5>("McLachlan's SB3A, m = 5 (order 4)", "McLachlan 1995 (coefficients as transcribed in Principia)",
+                                                4, true, true));
   out.push_back(explicit_entry<demp_rkn43>("DEMP RKN4(3)4FM, order-4 formula", "Dormand, El-Mikkawy & Prince 1987", 4, false, false));
   out.push_back(
       explicit_entry<demp_rkn43_embedded>("DEMP RKN4(3)4FM, order-3 formula", "Dormand, El-Mikkawy & Prince 1987", 3, false, false));

@@ -19,14 +19,27 @@
 /// are the complements of collocation on their nodes.
 ///
 /// The nodes of s = 2..5 lie in Q or in a quadratic field Q(sqrt d) for every family but Gauss
-/// and Radau with s = 4, 5 (their nodes generate fields of degree 8 and more; not here; the
-/// Gauss methods of any s as RKN tableaux are `galerkin_tableau<s>` of analysis/rkn_tableau.hpp).
+/// with s = 4, 5 and Radau with s = 4. There the irrational nodes are the roots x_1 < x_2 < ...
+/// of an irreducible quartic (Gauss; Galois group D4) or cubic (Radau; S3), and every entry of
+/// the tableau lies in their splitting field, of degree 8 (Gauss) or 6 (Radau): Q(theta) with
+/// theta = x_1 + 2 x_2, whose minimal polynomial is given where family_nodes uses it (computed
+/// once with SymPy's minimal_polynomial; tests/methods/test_catalogue.cpp checks every node
+/// against its family's polynomial, and the quadrature and simplifying conditions of the
+/// tableau). The nodes are found exactly in Q(theta): x_2 is the one common root of N(z) and
+/// N(theta - 2 z) (a gcd over Q(theta)), x_1 = theta - 2 x_2, and the others follow from the
+/// symmetry x -> 1 - x of the Gauss nodes or from the sum of the roots of the cubic. Radau with
+/// s = 5 is not here: the splitting field of its quartic has Galois group S4 and degree 24 (the
+/// series of Gauss s = 5, in degree 8, already cost seconds per tree order). The Gauss methods of
+/// any s as RKN tableaux over their stage algebra are `galerkin_tableau<s>` of
+/// analysis/rkn_tableau.hpp.
 /// The coefficients are field_element over that one field (methods/number_field.hpp), solved
 /// from the conditions above in exact arithmetic.
 
 #include <stdexcept>
-#include <type_traits>
 #include <string>
+#include <type_traits>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "geomint/methods/number_field.hpp"
@@ -65,6 +78,75 @@ inline field_vector solve_exact(field_matrix m, field_vector y) {
     x[i] = s / m[i][i];
   }
   return x;
+}
+
+/// The shifted Legendre polynomial P_n(2x - 1) over Q (constant first): (k + 1) P_{k+1} =
+/// (2k + 1) y P_k - k P_{k-1}, y = 2x - 1.
+inline poly shifted_legendre(int n) {
+  poly prev{}, cur{exact_rational(1)};
+  const poly y{exact_rational(-1), exact_rational(2)};
+  for (int k = 0; k < n; ++k) {
+    poly next = multiply(y, cur);
+    for (auto& x : next) x *= exact_rational(2 * k + 1, k + 1);
+    next = add(next, prev, exact_rational(-k, k + 1));
+    prev = std::move(cur);
+    cur = std::move(next);
+  }
+  return cur;
+}
+
+/// Polynomials in z over Q(theta) (constant first, no zero leading coefficient).
+using field_poly = std::vector<field_element>;
+inline void trim(field_poly& p) {
+  while (!p.empty() && p.back().is_zero()) p.pop_back();
+}
+/// p mod q (q with a nonzero leading coefficient).
+inline field_poly remainder(field_poly p, const field_poly& q) {
+  trim(p);
+  while (p.size() >= q.size()) {
+    const std::size_t shift = p.size() - q.size();
+    const field_element f = p.back() / q.back();
+    for (std::size_t i = 0; i < q.size(); ++i) p[shift + i] -= f * q[i];
+    p.pop_back();
+    trim(p);
+  }
+  return p;
+}
+
+/// The splitting field Q(theta) of the irreducible part of a family's node polynomial: theta =
+/// x_1 + 2 x_2 (x_1 < x_2 the two smallest roots), the root of `minimal` (integers, constant
+/// first) nearest `near`.
+struct splitting_field {
+  std::vector<long> minimal;
+  exact_rational near;
+};
+
+/// x_1 and x_2 of the irreducible polynomial n (over Q, constant first) in Q(theta): x_2 is the
+/// common root of n(z) and n(theta - 2 z), the last nonzero remainder of Euclid's algorithm.
+inline std::pair<field_element, field_element> two_smallest_roots(const poly& n, const splitting_field& f) {
+  std::vector<exact_rational> m;
+  for (long k : f.minimal) m.push_back(exact_rational(k));
+  const field_element theta = field_element::generator(algebraic_field::make(m, f.near));
+  field_poly a, b{field_element(0)};
+  for (const auto& x : n) a.push_back(field_element(x));
+  // n(theta - 2 z) by Horner's rule in z.
+  const field_poly shift{theta, field_element(-2)};
+  for (std::size_t k = n.size(); k-- > 0;) {
+    field_poly next(b.size() + 1, field_element(0));
+    for (std::size_t i = 0; i < b.size(); ++i)
+      for (std::size_t j = 0; j < 2; ++j) next[i + j] += b[i] * shift[j];
+    next[0] += field_element(n[k]);
+    b = std::move(next);
+  }
+  trim(b);
+  while (!b.empty()) {
+    field_poly r = remainder(a, b);
+    a = std::move(b);
+    b = std::move(r);
+  }
+  if (a.size() != 2) throw std::logic_error("collocation_families: the splitting field does not single out x_2");
+  const field_element x2 = -a[0] / a[1];
+  return {theta - field_element(2) * x2, x2};
 }
 
 inline field_element power(const field_element& x, int k) {
@@ -110,9 +192,20 @@ inline field_matrix complement(const field_matrix& a, const field_vector& b) {
   return out;
 }
 
-/// The nodes of a family with s stages (ascending), over Q or Q(sqrt d) (Hairer & Wanner II,
-/// section IV.5): the roots of the shifted Legendre polynomial P_s (Gauss), of
-/// P_s - P_{s-1} (right Radau, c_s = 1), P_s + P_{s-1} (left Radau, c_1 = 0), and
+/// The three roots below 1 of P_4(2x - 1) - P_3(2x - 1) (the right Radau nodes of s = 4, the
+/// roots of an irreducible cubic) in its splitting field; theta = x_1 + 2 x_2 = 0.90752168...
+inline std::tuple<field_element, field_element, field_element> right_radau_4_interior() {
+  poly cubic, rest;
+  divide(add(shifted_legendre(4), shifted_legendre(3), -1), {exact_rational(-1), exact_rational(1)}, cubic, rest);
+  const splitting_field field{{163593, -911250, 2031075, -2324700, 1444275, -463050, 60025}, exact_rational(907522, 1000000)};
+  const auto [x1, x2] = two_smallest_roots(cubic, field);
+  const field_element sum = field_element(-cubic[2] / cubic[3]);
+  return {x1, x2, sum - x1 - x2};
+}
+
+/// The nodes of a family with s stages (ascending), over Q, Q(sqrt d) or the splitting field
+/// above (Hairer & Wanner II, section IV.5): the roots of the shifted Legendre polynomial P_s
+/// (Gauss), of P_s - P_{s-1} (right Radau, c_s = 1), P_s + P_{s-1} (left Radau, c_1 = 0), and
 /// x (1 - x) P'_{s-1} (Lobatto). std::invalid_argument for s outside the catalogue.
 inline field_vector family_nodes(collocation_family f, int s) {
   auto q = [](long n, long d) { return field_element(exact_rational(n, d)); };
@@ -127,6 +220,23 @@ inline field_vector family_nodes(collocation_family f, int s) {
         const field_element r = sqrt_of(15);
         return {q(1, 2) - r / q(10, 1), q(1, 2), q(1, 2) + r / q(10, 1)};
       }
+      if (s == 4) {
+        // The roots of P_4(2x - 1); theta = x_1 + 2 x_2 = 0.72945080...
+        const splitting_field field{{375021, -2763936, 8420076, -13889736, 13613376, -8149680, 2922360, -576240, 48020},
+                                    exact_rational(729451, 1000000)};
+        const auto [x1, x2] = two_smallest_roots(shifted_legendre(4), field);
+        return {x1, x2, q(1, 1) - x2, q(1, 1) - x1};
+      }
+      if (s == 5) {
+        // The roots of P_5(2x - 1) / (x - 1/2); theta = x_1 + 2 x_2 = 0.50844076...
+        poly quartic, rest;
+        divide(shifted_legendre(5), {exact_rational(-1, 2), exact_rational(1)}, quartic, rest);
+        const splitting_field field{
+            {5851441, -51417072, 178740828, -323775144, 338158800, -210896784, 77443128, -15431472, 1285956},
+            exact_rational(508441, 1000000)};
+        const auto [x1, x2] = two_smallest_roots(quartic, field);
+        return {x1, x2, q(1, 2), q(1, 1) - x2, q(1, 1) - x1};
+      }
       break;
     case collocation_family::radau_iia:
       if (s == 2) return {q(1, 3), q(1, 1)};
@@ -134,12 +244,21 @@ inline field_vector family_nodes(collocation_family f, int s) {
         const field_element r = sqrt_of(6);
         return {(q(4, 1) - r) / q(10, 1), (q(4, 1) + r) / q(10, 1), q(1, 1)};
       }
+      if (s == 4) {
+        const auto [x1, x2, x3] = right_radau_4_interior();
+        return {x1, x2, x3, q(1, 1)};
+      }
       break;
     case collocation_family::radau_ia:
       if (s == 2) return {q(0, 1), q(2, 3)};
       if (s == 3) {
         const field_element r = sqrt_of(6);
         return {q(0, 1), (q(6, 1) - r) / q(10, 1), (q(6, 1) + r) / q(10, 1)};
+      }
+      if (s == 4) {
+        // Left Radau nodes are 1 - the right Radau nodes (P_s(-y) = (-1)^s P_s(y)).
+        const auto [x1, x2, x3] = right_radau_4_interior();
+        return {q(0, 1), q(1, 1) - x3, q(1, 1) - x2, q(1, 1) - x1};
       }
       break;
     case collocation_family::lobatto_iiia:

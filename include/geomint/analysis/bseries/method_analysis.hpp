@@ -4,8 +4,10 @@
 ///
 /// - Order: the largest p with a(t) = 1/gamma(t) (HLW: Hairer, Lubich & Wanner, Geometric
 ///   Numerical Integration, 2nd ed. 2006, section III.1) for every tree with |t| <= p: rk on
-///   one-colour trees (B-series), prk on two-colour trees (P-series), rkn and nystrom on the
-///   Nystrom trees of their partitioned form (partitioned_form.hpp).
+///   one-colour trees (B-series), prk on two-colour trees (P-series), nystrom on the N-trees of
+///   q'' = F(q, q') and rkn on the special N-trees of q'' = f(q), with the weights of the
+///   Nystrom coefficients themselves (nystrom_tree_set.hpp; the same order as on the Nystrom
+///   trees of the partitioned form, partitioned_form.hpp, as shown there).
 /// - Symplecticity: rk and prk by the conditions on the modified field up to the order analysed
 ///   (symplectic_conditions.hpp; a verdict up to that order, not a proof beyond it). rkn and
 ///   nystrom (on q'' = f(q), d = 1) by the exact algebraic conditions of Suris 1989 (HLW Theorem
@@ -17,6 +19,7 @@
 #include <vector>
 
 #include "geomint/analysis/bseries/modified_equation.hpp"
+#include "geomint/analysis/bseries/nystrom_tree_set.hpp"
 #include "geomint/analysis/bseries/partitioned_form.hpp"
 #include "geomint/analysis/bseries/symplectic_conditions.hpp"
 
@@ -52,14 +55,15 @@ bool rkn_symplectic(const methods::nystrom_form<K>& f) {
 }  // namespace detail
 
 namespace detail {
-/// The order of the series a over the trees marked in `wanted` (sorted by order).
-template <class K>
-void order_of(const tree_set& trees, const std::vector<K>& a, const std::vector<bool>& wanted, method_analysis& r) {
-  const std::vector<K> err = local_error_coefficients(trees, a);
+/// The order from the local error coefficients `err` of trees sorted by order (a tree_set or a
+/// nystrom_tree_set): one less than the order of the first tree with a nonzero one, else
+/// r.tree_order as a lower bound.
+template <class Trees, class K>
+void order_of(const Trees& trees, const std::vector<K>& err, method_analysis& r) {
   r.order = r.tree_order;
   r.order_is_lower_bound = true;
   for (int t = 0; t < trees.size(); ++t) {
-    if (!wanted[static_cast<std::size_t>(t)] || err[static_cast<std::size_t>(t)] == K(0)) continue;
+    if (err[static_cast<std::size_t>(t)] == K(0)) continue;
     r.order = trees[t].order - 1;
     r.order_is_lower_bound = false;
     return;
@@ -68,17 +72,15 @@ void order_of(const tree_set& trees, const std::vector<K>& a, const std::vector<
 }  // namespace detail
 
 /// Order and symplecticity of a Nystrom form (an rkn or nystrom tableau, a composition:
-/// methods/nystrom_form.hpp) on the Nystrom trees of its partitioned form; symplecticity by the
-/// RKN conditions (on q'' = f(q)).
+/// methods/nystrom_form.hpp) on its N-trees (the special ones without velocity stages);
+/// symplecticity by the RKN conditions (on q'' = f(q)).
 template <class K>
 method_analysis analyse_method(const methods::nystrom_form<K>& f, int order_two_colours = default_order_two_colours) {
   method_analysis r;
-  r.colours = 2;
+  r.colours = 2;  // N-trees have two kinds of vertices
   r.tree_order = order_two_colours;
-  const tree_set trees(r.tree_order, r.colours);
-  std::vector<bool> wanted(static_cast<std::size_t>(trees.size()));
-  for (int t = 0; t < trees.size(); ++t) wanted[static_cast<std::size_t>(t)] = is_nystrom_tree(trees, t, !f.has_velocity_stages);
-  detail::order_of(trees, elementary_weights(trees, partitioned_form_of(f), &wanted), wanted, r);
+  const nystrom_tree_set trees(r.tree_order, !f.has_velocity_stages);
+  detail::order_of(trees, local_error_coefficients(trees, f), r);
   r.symplectic = detail::rkn_symplectic(f);
   r.symplecticity_basis = "RKN conditions (exact)";
   return r;
@@ -96,7 +98,7 @@ method_analysis analyse_method(const tableau_data<K>& t, int order_one_colour = 
   r.tree_order = r.colours == 1 ? order_one_colour : order_two_colours;
   const tree_set trees(r.tree_order, r.colours);
   const std::vector<K> a = elementary_weights(trees, t);
-  detail::order_of(trees, a, std::vector<bool>(static_cast<std::size_t>(trees.size()), true), r);
+  detail::order_of(trees, local_error_coefficients(trees, a), r);
   r.symplectic = check_symplecticity_conditions(trees, modified_field(trees, a)).holds;
   r.symplecticity_basis = "tree conditions up to order " + std::to_string(r.tree_order);
   return r;

@@ -57,6 +57,24 @@ struct edge_cut {
   int multiplicity = 0;
 };
 
+namespace detail {
+/// gamma(t) = |t| prod gamma(u) and sigma(t) = prod over distinct sons u of (multiplicity)!
+/// sigma(u)^(multiplicity), for a tree t of order n whose root has the sons `sons` (ascending
+/// indices into `trees`).
+template <class Tree>
+void set_symmetry_and_density(Tree& t, int n, const std::vector<int>& sons, const std::vector<Tree>& trees) {
+  t.gamma = n;
+  t.sigma = 1;
+  std::int64_t run = 0;
+  for (std::size_t i = 0; i < sons.size(); ++i) {
+    const Tree& u = trees[static_cast<std::size_t>(sons[i])];
+    t.gamma *= u.gamma;
+    run = (i > 0 && sons[i] == sons[i - 1]) ? run + 1 : 1;
+    t.sigma *= run * u.sigma;  // (multiplicity)! built up one factor per repeat
+  }
+}
+}  // namespace detail
+
 /// All (one- or two-coloured) rooted trees up to an order, by order; within an order, by root
 /// colour and then by subtree indices.
 class tree_set {
@@ -138,14 +156,7 @@ class tree_set {
     t.order = n;
     t.colour = colour;
     t.subtrees = subtrees;
-    t.gamma = n;
-    std::int64_t run = 0;
-    for (std::size_t i = 0; i < subtrees.size(); ++i) {
-      const rooted_tree& u = trees_[static_cast<std::size_t>(subtrees[i])];
-      t.gamma *= u.gamma;
-      run = (i > 0 && subtrees[i] == subtrees[i - 1]) ? run + 1 : 1;
-      t.sigma *= run * u.sigma;  // (multiplicity)! built up one factor per repeat
-    }
+    detail::set_symmetry_and_density(t, n, subtrees, trees_);
     const int id = size();
     index_.emplace(std::make_pair(colour, subtrees), id);
     trees_.push_back(std::move(t));
