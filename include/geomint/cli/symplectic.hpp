@@ -89,7 +89,7 @@ std::optional<int> predicted_defect_order(List list, const study_case& c) {
 
 /// The fitted order log(d1 / d0) / log(tau1 / tau0) between two rungs of the ladder, 2 decimals.
 inline std::string fitted_order(double d0, double d1, double tau0, double tau1) {
-  if (!(d0 > 0) || !(d1 > 0)) return "nan";
+  if (!(d0 > 0) || !(d1 > 0) || tau0 == tau1) return "nan";
   std::ostringstream out;
   out << std::fixed << std::setprecision(2) << std::log(d1 / d0) / std::log(tau1 / tau0);
   return out.str();
@@ -187,7 +187,7 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
               2 * x.long_steps);
           if (!half.ok) {
             r.failure = "the run at tau/2 (error estimate) failed after " + std::to_string(half.steps) +
-                              " steps: " + long_failure.message();
+                        " steps: " + long_failure.message();
           } else {
             const double estimate = 2 * (end - end_half).lpNorm<Eigen::Infinity>();
             r.state_estimate = sci(estimate);
