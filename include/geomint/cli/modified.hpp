@@ -51,8 +51,9 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "  --tableau F   a tableau file (docs/guide/tableau_files.md): rk on one-colour trees (B-series),\n"
     "                prk on two-colour trees, rkn and nystrom on their Nystrom trees\n"
     "  --order K     print the coefficients b(t) of the modified field per tree up to order K (the\n"
-    "                h^(|t|-1) term is sum b(t)/sigma(t) F(t)), exact; for a symplectic rk tableau\n"
-    "                also the modified Hamiltonian's terms h^(|t|-1) c H(t) per free tree.\n"
+    "                h^(|t|-1) term is sum b(t)/sigma(t) F(t)), exact; for a symplectic method\n"
+    "                also the modified Hamiltonian's terms h^(|t|-1) c H(t) per free tree (rk: every\n"
+    "                H; scheme, rkn, nystrom: H = |p|^2/2 + V(q); prk: H = T(p) + V(q)).\n"
     "                Trees: q/p (two colours) or y (one colour) with the children in brackets.\n"
     "With --system S (a natural system of at most 2 degrees of freedom; the compile time and stack\n"
     "size of the nested duals bound the dimension) it runs the\n"
@@ -99,6 +100,10 @@ struct method_series {
   bool symplectic = false;
   std::string symplecticity_basis;
   bool one_colour = false;   ///< an rk tableau (B-series); else P-series
+  /// Two colours: the Hamiltonians the modified Hamiltonian is printed for (natural for a
+  /// scheme, rkn and nystrom; separable for prk) and the colour of q' = H_p on the trees.
+  hamiltonian_class hamiltonians = hamiltonian_class::natural;
+  int position_colour = 0;
   tree_set trees{1, 1};
   std::vector<bool> wanted;  ///< the trees whose coefficients the method defines
   std::vector<field_element> b;
@@ -154,6 +159,10 @@ inline method_series series_of(const options& o) {
     m.symplectic = verdict.symplectic;
     m.symplecticity_basis = verdict.symplecticity_basis;
     m.one_colour = t.kind == methods::method_kind::rk;
+    if (t.kind == methods::method_kind::prk) {  // the pair's first tableau on p (colour 0)
+      m.hamiltonians = hamiltonian_class::separable;
+      m.position_colour = 1;
+    }
     const int n = needed_order(o, m.order);
     const int limit = m.one_colour ? max_tree_order_one_colour : max_tree_order_two_colours;
     if (verdict.order_is_lower_bound && !o.system.empty())
@@ -212,11 +221,17 @@ inline void print_series(const method_series& m, int order, bool csv) {
       std::cout << "  |t| = " << m.trees[t].order << "  " << std::left << std::setw(28) << tree_text(m.trees, t) << std::right
                 << " sigma " << std::setw(3) << m.trees[t].sigma << "  b = " << exact_text(m.b[i]) << '\n';
   }
-  if (csv || !m.one_colour || !m.symplectic) return;
-  std::cout << "modified Hamiltonian: H~ = sum over free trees h^(|t|-1) c H(t), H(y[t1..tm]) = H^(m+1)(F(t1),..,F(tm))\n";
-  const tree_set trees(order, 1);
+  if (csv || !m.symplectic) return;
+  std::cout << "modified Hamiltonian: H~ = sum over free trees h^(|t|-1) c H(t), H(y[t1..tm]) = H^(m+1)(F(t1),..,F(tm))";
+  if (!m.one_colour)
+    std::cout << (m.hamiltonians == hamiltonian_class::natural ? " on H = |p|^2/2 + V(q)" : " on H = T(p) + V(q)")
+              << ", the derivatives of H in q or p by the subtrees' root colours";
+  std::cout << '\n';
+  const tree_set trees(order, m.one_colour ? 1 : 2);
   const std::vector<field_element> b(m.b.begin(), m.b.begin() + trees.size());
-  for (const auto& term : modified_hamiltonian(trees, b))
+  std::vector<bool> marked;  // two colours: the trees whose H(t) can be non-zero on the class
+  if (!m.one_colour) marked = hamiltonian_trees(trees, m.hamiltonians, m.position_colour);
+  for (const auto& term : modified_hamiltonian(trees, b, m.one_colour ? nullptr : &marked))
     std::cout << "  h^" << term.order - 1 << "  " << std::left << std::setw(28) << tree_text(trees, term.tree) << std::right
               << " c = " << exact_text(term.coefficient) << '\n';
 }

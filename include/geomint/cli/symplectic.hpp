@@ -1,14 +1,18 @@
 #pragma once
 /// The `symplectic` front end (geomint-symplectic): the symplecticity defect ||J^T Omega J -
 /// Omega|| of the one-step map of each scheme on the systems of a system_list, and (with
-/// --long-steps) its long-time energy behaviour.
+/// --long-steps) its long-time energy behaviour; with a ladder of steps (--tau T1,T2,...) the
+/// fitted order of the defect beside its predicted order (analysis/bseries/lpf_symplecticity_defect.hpp).
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
+#include "geomint/analysis/bseries/lpf_symplecticity_defect.hpp"
 #include "geomint/analysis/symplecticity.hpp"
 #include "geomint/cli/study.hpp"
 
@@ -20,7 +24,8 @@ using boost::multiprecision::cpp_bin_float_100;
 using boost::multiprecision::cpp_bin_float_50;
 
 struct extra_options {
-  std::string tau = "0.25", long_tau;
+  std::vector<std::string> tau = {"0.25"};
+  std::string long_tau;
   std::vector<std::string> q0, p0;
   long long_steps = 0;
   bool monitor = true;
@@ -66,7 +71,29 @@ struct row {
   std::string defect = "nan", max_energy = "nan", drift = "nan", failure, regime = "ok";
   std::string defect_estimate = "nan", state_estimate = "nan";
   bool coarse = false;  ///< the long run's estimated error above 1/100 of the solution's size
+  double defect_value = std::nan("");  ///< the defect, for the fitted order of a ladder of tau
 };
+
+/// The predicted order r of the defect, C tau^r + O(tau^(r+1)), of a case; std::nullopt where it
+/// vanishes identically: the variational integrators (midpoint, trapezoidal, galerkin: a discrete
+/// Lagrangian, symplectic for every regular Lagrangian; Marsden & West 2001) and LPF where its
+/// Nystrom map is a symplectic RKN method (lpf_symplecticity_defect.hpp).
+template <class List>
+std::optional<int> predicted_defect_order(List list, const study_case& c) {
+  if (c.spec.scheme != "lpf" && c.spec.scheme != "lpf-fixed-point") return std::nullopt;
+  const auto lagrangian = with_system(list, c.system, []<class Sys>() {
+    return natural_system<Sys> ? analysis::lagrangian_class::natural : analysis::lagrangian_class::general;
+  });
+  return analysis::lpf_defect_order(c.spec.nodes_label(), c.spec.m, lagrangian);
+}
+
+/// The fitted order log(d1 / d0) / log(tau1 / tau0) between two rungs of the ladder, 2 decimals.
+inline std::string fitted_order(double d0, double d1, double tau0, double tau1) {
+  if (!(d0 > 0) || !(d1 > 0) || tau0 == tau1) return "nan";
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << std::log(d1 / d0) / std::log(tau1 / tau0);
+  return out.str();
+}
 
 /// The map, recording the last state it produced (the end of a run through energy_behaviour).
 template <class T>
@@ -89,8 +116,11 @@ template <class T, class List>
 int run(const std::string& program, const selection<List>& sel, const extra_options& x) {
   const List list;
   const auto cases = sel.cases();
-  const T tau = parse_number<T>("--tau", x.tau);  // checked finite > 0 by the parser
-  const double long_tau = x.long_tau.empty() ? static_cast<double>(tau) : parse_number<double>("--long-tau", x.long_tau);
+  std::vector<T> taus;  // checked finite > 0 by the parser
+  for (const std::string& t : x.tau) taus.push_back(parse_number<T>("--tau", t));
+  const std::size_t rungs = taus.size();
+  const bool ladder = rungs > 1;
+  const double long_tau = x.long_tau.empty() ? static_cast<double>(taus.front()) : parse_number<double>("--long-tau", x.long_tau);
   // Check --q0 / --p0 here: the workers below report failures per case, not usage errors.
   if (!x.q0.empty() || !x.p0.empty()) {
     const std::string& system = sel.systems.front();
@@ -101,9 +131,12 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
       for (const std::string& s : *v) parse_number<T>("--q0/--p0", s);
     }
   }
-  std::vector<row> rows(cases.size());
+  std::vector<row> rows(cases.size() * rungs);  // case-major: rows[i * rungs + k] at taus[k]
   const auto start = std::chrono::steady_clock::now();
-  parallel_for(cases.size(), sel.threads, [&](std::size_t i) {
+  parallel_for(rows.size(), sel.threads, [&](std::size_t job) {
+    const std::size_t i = job / rungs;
+    const T& tau = taus[job % rungs];
+    row& r = rows[job];
     const auto& c = cases[i];
     try {
       const auto stepper = make_stepper<T>(list, c.system, c.spec);
@@ -120,14 +153,15 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
         throw std::runtime_error(failed ? std::string(e.what()) : std::string(e.what()) + ": " + failed.message());
       }
       const T defect = analysis::symplectic_defect<T>(J);
-      rows[i].defect = sci(defect);
+      r.defect = sci(defect);
+      r.defect_value = static_cast<double>(defect);
       {
         using std::abs;
-        rows[i].defect_estimate = sci(T(abs(T(analysis::symplectic_defect<T>(J2) - defect))));
+        r.defect_estimate = sci(T(abs(T(analysis::symplectic_defect<T>(J2) - defect))));
       }
       // A defect of order one is no measurement of symplecticity: the map is outside the
       // regime where the finite-difference Jacobian means anything (tau far too large).
-      if (!(defect <= T(1))) rows[i].regime = "outside: defect above 1";
+      if (!(defect <= T(1))) r.regime = "outside: defect above 1";
       if (x.long_steps > 0) {
         const auto fast = make_stepper<double>(list, c.system, c.spec);
         if (x.monitor) fast->set_monitor(step_monitor<double>::on());
@@ -142,9 +176,9 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
         const auto e = analysis::energy_behaviour<double>(recording(as_map<double>(*fast, long_tau, &long_failure), end),
                                                           energy, zd, long_tau, x.long_steps);
         if (!e.ok)
-          rows[i].failure = "long run failed after " + std::to_string(e.steps) + " steps: " + long_failure.message();
-        rows[i].max_energy = sci(e.max_error);
-        rows[i].drift = sci(e.drift);
+          r.failure = "long run failed after " + std::to_string(e.steps) + " steps: " + long_failure.message();
+        r.max_energy = sci(e.max_error);
+        r.drift = sci(e.drift);
         if (e.ok) {
           // The same run at tau/2: Richardson's estimate of the global error at t = N tau,
           // |z(tau) - z(tau/2)| 2^p / (2^p - 1) <= 2 |z(tau) - z(tau/2)| for every order p >= 1.
@@ -152,17 +186,17 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
               recording(as_map<double>(*fast, long_tau / 2, &long_failure), end_half), energy, zd, long_tau / 2,
               2 * x.long_steps);
           if (!half.ok) {
-            rows[i].failure = "the run at tau/2 (error estimate) failed after " + std::to_string(half.steps) +
-                              " steps: " + long_failure.message();
+            r.failure = "the run at tau/2 (error estimate) failed after " + std::to_string(half.steps) +
+                        " steps: " + long_failure.message();
           } else {
             const double estimate = 2 * (end - end_half).lpNorm<Eigen::Infinity>();
-            rows[i].state_estimate = sci(estimate);
-            rows[i].coarse = !(estimate <= end_half.lpNorm<Eigen::Infinity>() / 100);
+            r.state_estimate = sci(estimate);
+            r.coarse = !(estimate <= end_half.lpNorm<Eigen::Infinity>() / 100);
           }
         }
       }
     } catch (const std::exception& e) {
-      rows[i].failure = e.what();
+      r.failure = e.what();
     }
   }, program.c_str());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -171,14 +205,26 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
   const bool longrun = x.long_steps > 0;
   if (sel.csv)
     std::cout << "system,scheme,nodes,m,tau,defect" << (longrun ? ",max_energy_error,energy_drift" : "")
-              << ",regime,defect_estimate" << (longrun ? ",state_error_estimate" : "") << '\n';
-  else
+              << ",regime,defect_estimate" << (longrun ? ",state_error_estimate" : "")
+              << (ladder ? ",fitted_order,predicted_order" : "") << '\n';
+  else {
     std::cout << std::left << std::setw(16) << "system" << std::setw(scheme_w) << "scheme" << std::setw(16) << "nodes"
-              << std::setw(4) << "m" << std::right << std::setw(11) << "defect" << std::setw(11) << "+-"
-              << (longrun ? "   max|H-H0|   dH/dt  err(t_N)" : "") << '\n';
-  for (std::size_t i = 0; i < cases.size(); ++i) {
+              << std::setw(4) << "m" << std::right;
+    if (ladder) std::cout << std::setw(12) << "tau";
+    std::cout << std::setw(11) << "defect" << std::setw(11) << "+-" << (longrun ? "   max|H-H0|   dH/dt  err(t_N)" : "")
+              << (ladder ? "  fitted  predicted" : "") << '\n';
+  }
+  for (std::size_t job = 0; job < rows.size(); ++job) {
+    const std::size_t i = job / rungs, k = job % rungs;
     const auto& c = cases[i];
-    const row& r = rows[i];
+    const row& r = rows[job];
+    std::string fitted = "nan", predicted = "inf";
+    if (ladder) {
+      if (k > 0)
+        fitted = fitted_order(rows[job - 1].defect_value, r.defect_value, static_cast<double>(taus[k - 1]),
+                              static_cast<double>(taus[k]));
+      if (const auto order = predicted_defect_order(list, c)) predicted = std::to_string(*order);
+    }
     if (!r.failure.empty()) {
       std::cerr << program << ": " << c.system << ", " << c.spec.scheme << ": " << r.failure << '\n';
       status = exit_run_failure;
@@ -193,22 +239,27 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
                 << " error at t = N tau is " << r.state_estimate << ", above 1/100 of the solution's size\n";
     if (sel.csv) {
       std::cout << c.system << ',' << c.spec.scheme << ',' << c.spec.nodes_label() << ','
-                << m_label(c.spec) << ',' << x.tau << ',' << r.defect;
+                << m_label(c.spec) << ',' << x.tau[k] << ',' << r.defect;
       if (longrun) std::cout << ',' << r.max_energy << ',' << r.drift;
       std::cout << ',' << (r.failure.empty() ? r.regime : "failed") << ',' << r.defect_estimate;
       if (longrun) std::cout << ',' << r.state_estimate;
+      if (ladder) std::cout << ',' << fitted << ',' << predicted;
     } else {
       std::cout << std::left << std::setw(16) << c.system << std::setw(scheme_w) << c.spec.scheme << std::setw(16)
-                << c.spec.nodes_label() << std::setw(4) << m_label(c.spec) << std::right
-                << std::setw(11) << r.defect << std::setw(11) << r.defect_estimate;
+                << c.spec.nodes_label() << std::setw(4) << m_label(c.spec) << std::right;
+      if (ladder) std::cout << std::setw(12) << x.tau[k];
+      std::cout << std::setw(11) << r.defect << std::setw(11) << r.defect_estimate;
       if (longrun) std::cout << std::setw(12) << r.max_energy << std::setw(10) << r.drift << std::setw(10) << r.state_estimate;
+      if (ladder) std::cout << std::setw(8) << fitted << std::setw(11) << predicted;
       if (!r.failure.empty()) std::cout << "  FAILED";
       else if (r.regime != "ok") std::cout << "  OUTSIDE THE REGIME (" << r.regime << ")";
       else if (r.coarse) std::cout << "  COARSE";
     }
     std::cout << '\n';
   }
-  std::cerr << program << ": " << cases.size() << " case(s), tau = " << x.tau << ", "
+  std::string tau_list;
+  for (const std::string& t : x.tau) tau_list += (tau_list.empty() ? "" : ",") + t;
+  std::cerr << program << ": " << cases.size() << " case(s), tau = " << tau_list << ", "
             << std::numeric_limits<T>::digits10 << " digits";
   if (longrun) std::cerr << ", " << x.long_steps << " long steps of " << long_tau << " in double";
   std::cerr << "; " << std::fixed << std::setprecision(1) << seconds << " s on " << sel.threads << " thread(s)\n";
@@ -221,13 +272,16 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
 inline std::string symplectic_usage(const std::string& program, const std::vector<std::string>& names) {
   const std::string pad(program.size() + 8, ' ');
   return "usage: " + program + " [--system S[,S...]|all] [--scheme S[,S...]|all] [--nodes F[,F...]|all]\n" + pad +
-         "[--m M|A..B (2..8)] [--digits 16|50|100] [--tau T] [--q0 a[,b...]] [--p0 a[,b...]]\n" + pad +
+         "[--m M|A..B (2..8)] [--digits 16|50|100] [--tau T[,T2...]] [--q0 a[,b...]] [--p0 a[,b...]]\n" + pad +
          "[--long-steps N (0..10^9)] [--long-tau T] [--threads K (1..64)] [--csv] [--no-monitor]\n"
          "The Jacobian J of the one-step map (q, p) -> (q1, p1) at (q0, p0) with step tau, by central\n"
          "differences with Richardson extrapolation in --digits digit arithmetic (default 50, tau 0.25),\n"
          "and the defect max |(J^T Omega J - Omega)_ij|: zero up to about eps^(4/5) for a symplectic map.\n"
          "With --long-steps N also N steps of size --long-tau in double: max |H - H0| and the drift of\n"
-         "H - H0. The rows and columns of geomint-symplectic (docs/guide/your_own_tools.md).\n"
+         "H - H0. With a ladder --tau T1,T2,... (no --long-steps) one row per tau, each with the order\n"
+         "fitted to the defects at it and the tau before, log(d_k/d_{k-1})/log(tau_k/tau_{k-1}), and the\n"
+         "predicted order (inf: the defect vanishes identically). The rows and columns of\n"
+         "geomint-symplectic (docs/guide/your_own_tools.md).\n"
          + selection_usage(names) +
          "regime is 'ok', 'failed' or 'outside: ...'; any case not 'ok' makes the exit status 3. The step\n"
          "monitor is on (--no-monitor turns it off).\n";
@@ -243,7 +297,7 @@ int symplectic_main(List list, int argc, const char* const* argv, study_tool too
   extra_options x;
   parser cl(tool.program, tool.usage.empty() ? symplectic_usage(tool.program, system_names(list)) : tool.usage);
   sel.register_flags(cl, {"16", "50", "100"}, tool);
-  cl.value("--tau", [&](const std::string& v) { x.tau = checked_real_text("--tau", v, real_bound::positive); })
+  cl.value("--tau", [&](const std::string& v) { x.tau = parse_real_list("--tau", v, real_bound::positive); })
       .value("--long-tau", [&](const std::string& v) { x.long_tau = checked_real_text("--long-tau", v, real_bound::positive); })
       .value("--q0", [&](const std::string& v) { x.q0 = parse_real_list("--q0", v, real_bound::finite); })
       .value("--p0", [&](const std::string& v) { x.p0 = parse_real_list("--p0", v, real_bound::finite); })
@@ -253,6 +307,8 @@ int symplectic_main(List list, int argc, const char* const* argv, study_tool too
   try {
     if ((!x.q0.empty() || !x.p0.empty()) && sel.systems.size() != 1)
       throw usage_error("--q0 / --p0 need a single --system");
+    if (x.tau.size() > 1 && x.long_steps > 0)
+      throw usage_error("--long-steps needs a single --tau (a ladder of tau measures the defect only)");
     sel.check_cases();
     int status = 0;
     if (sel.digits == 16) status = run<double>(tool.program, sel, x);
