@@ -318,8 +318,10 @@ int analyse_file(const options& o, const methods::tableau_data<methods::field_el
     return cli::finish_stdout("geomint-scheme");
   }
   std::cout << o.method_label << ": " << name << " (" << kind << ", " << t.stages << " stages)\n"
-            << "  order " << order << " (" << (r.colours == 1 ? "B-series, rooted trees" : "P-series, bi-coloured trees")
-            << (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom ? " of the Nystrom form" : "")
+            << "  order " << order << " ("
+            << (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom
+                    ? "Nystrom trees"
+                    : r.colours == 1 ? "B-series, rooted trees" : "P-series, bi-coloured trees")
             << " up to order " << r.tree_order << "), stage order " << v.stage_order << "\n"
             << "  symplectic: " << (r.symplectic ? "yes" : "no") << " (" << r.symplecticity_basis << "); symmetric: "
             << (v.symmetric ? "yes" : "no") << " (up to a permutation of the stages)\n";
