@@ -42,7 +42,7 @@ inline std::string modified_usage(const std::string& program, const std::vector<
   const std::string indent(program.size() + 8, ' ');
   return "usage: " + program + " (--scheme S [--nodes F] [--m M] | --tableau FILE) [--order K]\n" + indent +
          "[--system S [--q0 a[,b]] [--p0 a[,b]] --tau T[,T2,...] --steps N\n" + indent +
-         " [--terms K] [--digits 16|50|100] [--csv]]\n" +
+         " [--terms K] [--digits 16|50|100] [--csv] [--no-monitor]]\n" +
          std::string(
     "The modified equation y' = f + h^p f_{p+1} + ... of a method (backward error analysis;\n"
     "Hairer, Lubich & Wanner, Geometric Numerical Integration, 2006, chapter IX), exactly.\n"
@@ -71,7 +71,9 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                (the h^p term can average to zero over a period: RK4 drifts at h^5, --terms 2)\n"
     "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); p + K at most 9\n"
     "  --digits D    working precision 16 (default), 50 or 100\n"
-    "Initial data as geomint-run (--p0 the momentum); the step monitor is on. A failed run prints nan.\n"
+    "Initial data as geomint-run (--p0 the momentum); the step monitor is on (--no-monitor turns it\n"
+    "off: its energy check can refuse a resolved step whose exchange of kinetic and potential energy\n"
+    "vanishes, at a turning point; docs/guide/robustness.md). A failed run prints nan.\n"
     "Exit 2 on usage errors, 3 on a failed run.\n") +
          "systems: " + comma_list(systems) + "\n";
 }
@@ -87,7 +89,7 @@ struct options {
   std::string scheme, tableau, system;
   std::string nodes = "equispaced";
   int m = 2;
-  bool nodes_given = false, m_given = false, csv = false;
+  bool nodes_given = false, m_given = false, csv = false, monitor = true;
   int order = 0, terms = 1, digits = 16;
   long steps = 0;
   std::vector<std::string> tau, q0, p0;
@@ -277,7 +279,7 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
                            ? make_tableau_stepper<T>(list, o.system,
                                                           methods::nystrom_form_of(methods::read_tableau_file(o.tableau)))
                            : make_stepper<T>(list, o.system, spec_of(o));
-  stepper->set_monitor(step_monitor<T>::on());
+  if (o.monitor) stepper->set_monitor(step_monitor<T>::on());
   dynamic_vector<T> q, p, q1, p1;
   try {
     std::tie(q, p) = default_initial_state<T>(list, o.system, *stepper, o.q0, o.p0,
@@ -419,7 +421,8 @@ int modified_main(List list, int argc, const char* const* argv, study_tool tool 
       .value("--steps", [&](const std::string& v) { o.steps = cli::parse_integer<long>("--steps", v, 1, 1'000'000L); })
       .value("--terms", [&](const std::string& v) { o.terms = cli::parse_integer<int>("--terms", v, 1, 8); })
       .value("--digits", [&](const std::string& v) { o.digits = std::stoi(cli::parse_choice("--digits", v, {"16", "50", "100"})); })
-      .toggle("--csv", [&] { o.csv = true; });
+      .toggle("--csv", [&] { o.csv = true; })
+      .toggle("--no-monitor", [&] { o.monitor = false; });
   if (const auto done = cl.parse(argc, argv)) return *done;
   try {
     if (o.scheme.empty() == o.tableau.empty()) throw cli::usage_error("give one of --scheme and --tableau");
