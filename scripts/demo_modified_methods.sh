@@ -102,10 +102,7 @@ done
   echo
   echo "with TAUS = 0.2,0.1,0.05 for order p <= 4, 0.4,0.2,0.1 for p = 6 and 0.8,0.4,0.2 for p = 8 (the"
   echo "errors stay above double round-off), --terms 2 for RK4, and METHOD one of the list below."
-  echo "Without the step monitor: the page measures the energy error itself, and the monitor's energy"
-  echo "check refuses resolved steps that straddle a turning point of the pendulum, where the step's"
-  echo "exchange of kinetic and potential energy vanishes (Ruth-3 at every tau, RK4 at tau = 0.2;"
-  echo "docs/guide/robustness.md)."
+  echo "Without the step monitor (\`--no-monitor\`): the page measures the energy error itself."
   echo
   while IFS='|' read -r label shown; do echo "    $shown"; done < "$work/commands.txt"
   echo

@@ -25,6 +25,8 @@
 #include "geomint/integrator.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/mechanics/zoo.hpp"
+#include "geomint/methods/catalogue.hpp"
+#include "geomint/methods/tableau_method.hpp"
 #include "geomint/stepper.hpp"
 #include "scalar_types.hpp"
 
@@ -135,6 +137,47 @@ TEMPLATE_LIST_TEST_CASE("step monitor: the energy check does not depend on the p
   // The same ratio up to the rounding of L + 1000 (about 1000 eps relative).
   CHECK(std::abs(b.observed - a.observed) <= 1e-9 * a.observed);
   CHECK(std::abs(c.observed - a.observed) <= 1e-9 * a.observed);
+}
+
+TEMPLATE_LIST_TEST_CASE("step monitor: resolved runs through extrema of the kinetic energy are never refused",
+                        "[monitor]", geomint::test::integrator_scalar_types) {
+  // Each run is resolved (tau omega_max <= 1/10 against bounds of 3 and more) and its energy
+  // error, measured here without the monitor, stays below 1/100 of the energy: correct runs.
+  // Their steps cross extrema of the kinetic energy, where the exchange |Delta(p . qdot)| + |Delta L|
+  // of a step vanishes to first order while its energy error does not (a turning point of the
+  // pendulum; for Henon-Heiles, extrema of the total kinetic energy while the two degrees of
+  // freedom still exchange energy). Against the exchange alone these steps were refused:
+  // Henon-Heiles trapezoidal step 250, midpoint step 146; the pendulum with Ruth's method
+  // (Ruth 1983; methods/catalogue.hpp) step 33.
+  using T = TestType;
+  using std::abs;
+  using std::max;
+  auto worst_error = [&]<class Scheme, class Sys>(Scheme, Sys, const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0,
+                                                  const T& tau, int steps, bool monitored) {
+    integrator<Scheme, Sys, T> I(Sys{}, tau);
+    if (monitored) I.set_monitor(step_monitor<T>::on());
+    auto s = I.initial_state(q0, v0);
+    const T e0 = I.energy(s);
+    T worst(0);
+    for (int k = 0; k < steps; ++k) {
+      const step_status st = I.try_step(s);
+      INFO("step " << k << ": " << st.message());
+      REQUIRE(st);
+      worst = max(worst, T(abs(T(I.energy(s) - e0))));
+    }
+    return worst;
+  };
+  vec<T, 2> q0, v0;
+  zoo::henon_heiles::initial_data<T>(q0, v0);  // E = 1/8
+  const T tenth = T(1) / T(10);
+  for (const bool monitored : {false, true}) {
+    CHECK(worst_error(trapezoidal_vi{}, zoo::henon_heiles{}, q0, v0, tenth, 400, monitored) < T(1) / T(800));
+    CHECK(worst_error(midpoint_vi{}, zoo::henon_heiles{}, q0, v0, tenth, 400, monitored) < T(1) / T(800));
+    // The pendulum from rest at q = 1: E = -cos 1, |E| = 0.54; turning points every half period.
+    for (const T& tau : {tenth, T(2) * tenth})
+      CHECK(worst_error(methods::tableau_method<methods::ruth3>{}, systems::pendulum{}, vec<T, 1>(T(1)),
+                        vec<T, 1>(T(0)), tau, 400, monitored) < T(1) / T(200));
+  }
 }
 
 TEMPLATE_LIST_TEST_CASE("step monitor: runs with energy 0 that conserve it are never refused", "[monitor]",

@@ -72,8 +72,7 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); p + K at most 9\n"
     "  --digits D    working precision 16 (default), 50 or 100\n"
     "Initial data as geomint-run (--p0 the momentum); the step monitor is on (--no-monitor turns it\n"
-    "off: its energy check can refuse a resolved step whose exchange of kinetic and potential energy\n"
-    "vanishes, at a turning point; docs/guide/robustness.md). A failed run prints nan.\n"
+    "off; docs/guide/robustness.md). A failed run prints nan.\n"
     "Exit 2 on usage errors, 3 on a failed run.\n") +
          "systems: " + comma_list(systems) + "\n";
 }

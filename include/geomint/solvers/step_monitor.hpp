@@ -12,14 +12,24 @@
 ///     of the linearised flow (fastest_local_rate below) at the step's start and end, and the
 ///     bound is the scheme's (schemes/resolution.hpp: 2s + 1 for a scheme of order 2s, where
 ///     the Gauss method's phase error per step is one radian).
-///  2. Energy: |E_{k+1} - E_k| <= max_energy_change_ratio * (|Delta(p . qdot)| + |Delta L|)
-///     + 2^10 eps (|p . qdot| + |L| at both ends). E = p . qdot - L, so the scale is the energy
-///     the step exchanges between its terms: a constant added to L (the potential's zero)
+///  2. Energy: |E_{k+1} - E_k| <= max_energy_change_ratio * S + 2^10 eps (|p . qdot| + |L| at
+///     both ends), S = max(|Delta(p . qdot)| + |Delta L|, tau |Delta Ldot| / 2), Ldot = dL/dt
+///     along the flow at each end. E = p . qdot - L, so the first term of S is the energy the
+///     step exchanges between the terms of E: a constant added to L (the potential's zero)
 ///     cancels in Delta L, and for a natural system it is 2|Delta T| + |Delta T - Delta V|,
 ///     between |Delta T| + |Delta V| and three times that. A variational scheme's energy error
 ///     stays O(tau^p) (backward error analysis; Hairer, Lubich, Wanner, Geometric Numerical
 ///     Integration, 2nd ed. (2006), ch. IX), a small part of what a resolved step exchanges;
 ///     the default ratio 1/10 refuses steps whose energy error is comparable to the exchange.
+///     The exchange of a step that straddles an extremum of the kinetic energy (a turning point
+///     of a pendulum) vanishes to first order while the step's energy error does not; there the
+///     second term, the step times the change of the rate of exchange (d(p . qdot)/dt = dL/dt
+///     along the flow), is its second-order size: for a step with the extremum at its midpoint,
+///     p . qdot and L each vary by tau |Delta Ldot| / 8 on each half, tau |Delta Ldot| / 2 in
+///     all, to second order in tau (natural systems: p . qdot = 2T, L = 2T - E). It is small
+///     against the first term away from extrema. Without it, resolved runs were refused at
+///     extrema (Henon-Heiles at tau = 1/10 with the trapezoidal and midpoint rules, Ruth's
+///     order-3 method on the pendulum: tests/solvers/test_step_monitor.cpp).
 ///     The round-off floor (2^10 eps times the terms of E, i.e. the rounding of E and of the
 ///     solve's tolerance with room) means a step that conserves energy to round-off is never
 ///     refused, whatever the scale (a system at rest, a parabolic orbit with E = 0).
@@ -45,6 +55,9 @@ struct monitor_point {
   T p_qdot = std::numeric_limits<T>::quiet_NaN();  ///< p . qdot (2T for a natural system)
   T lagrangian = std::numeric_limits<T>::quiet_NaN();
   T rate = T(0);  ///< omega_max (0 when not measured)
+  /// dL/dt = d(p . qdot)/dt along the flow (L_q . qdot + L_qdot . qddot, qddot from the
+  /// Euler-Lagrange equations): the rate at which the terms of E exchange energy.
+  T lagrangian_rate = std::numeric_limits<T>::quiet_NaN();
 };
 
 namespace detail {
@@ -146,6 +159,12 @@ monitor_point<T> measure_monitor_point(const Sys& sys, const vec<T, Sys::dof>& q
   m.p_qdot = v.dot(g.Lv);
   m.lagrangian = g.L;
   m.energy = T(m.p_qdot - m.lagrangian);
+  {
+    const hessian_data<T, Sys::dof> h = lagrangian_derivatives<Sys, T>::hessian(sys, q, v);
+    vec<T, Sys::dof> a;
+    if (solve_small<T, Sys::dof>(h.Lvv, vec<T, Sys::dof>(h.Lq - h.Lvq * v), a))
+      m.lagrangian_rate = T(h.Lq.dot(v) + h.Lv.dot(a));
+  }
   if (with_rate) m.rate = fastest_local_rate<Sys, T>(sys, q, v);
   return m;
 }
@@ -206,14 +225,16 @@ struct step_monitor {
     };
     const T inf = std::numeric_limits<T>::infinity();
     if (!is_finite(before.energy) || !is_finite(after.energy) || !is_finite(before.p_qdot) || !is_finite(after.p_qdot) ||
-        !is_finite(before.lagrangian) || !is_finite(after.lagrangian) || !is_finite(before.rate) || !is_finite(after.rate))
+        !is_finite(before.lagrangian) || !is_finite(after.lagrangian) || !is_finite(before.rate) || !is_finite(after.rate) ||
+        !is_finite(before.lagrangian_rate) || !is_finite(after.lagrangian_rate))
       return refuse(monitor_check::non_finite, inf, T(0));
     if (checks_resolution()) {
       const T resolution = T(tau * max(before.rate, after.rate));
       if (resolution > max_tau_omega) return refuse(monitor_check::resolution, resolution, max_tau_omega);
     }
     const T change = abs(T(after.energy - before.energy));
-    const T scale = T(abs(T(after.p_qdot - before.p_qdot)) + abs(T(after.lagrangian - before.lagrangian)));
+    const T exchange = T(abs(T(after.p_qdot - before.p_qdot)) + abs(T(after.lagrangian - before.lagrangian)));
+    const T scale = max(exchange, T(tau * abs(T(after.lagrangian_rate - before.lagrangian_rate)) / T(2)));
     const T floor = round_off_units() * std::numeric_limits<T>::epsilon() *
                     (abs(before.p_qdot) + abs(before.lagrangian) + abs(after.p_qdot) + abs(after.lagrangian));
     if (change > max_energy_change_ratio * scale + floor)

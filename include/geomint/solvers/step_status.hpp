@@ -66,7 +66,7 @@ struct step_status {
         text += ": tau * omega_max = " + std::to_string(observed) + " > " + std::to_string(bound) +
                 " (the step does not resolve the fastest local motion)";
       else if (regime_check == monitor_check::energy)
-        text += ": |E_{k+1} - E_k| / (|Delta(p.qdot)| + |Delta L|) = " + std::to_string(observed) + " > " +
+        text += ": |E_{k+1} - E_k| / max(|Delta(p.qdot)| + |Delta L|, tau |Delta dL/dt| / 2) = " + std::to_string(observed) + " > " +
                 std::to_string(bound) + " (the energy error is comparable to the energy the step exchanged)";
       else if (regime_check == monitor_check::non_finite)
         text += ": the energy or the local rate is not finite (the Legendre transform failed)";
