@@ -78,7 +78,7 @@ endforeach()
 geomint_cli_test(geomint_cli_scheme_analyse_tableau_rk_text zero
                  "radau-iia-3 .rk, 3 stages.*stage order 3.*symmetric: no.*R.z. = .60 [+] 24 z [+] 3 z.2./.60 - 36 z [+] 9 z.2 - z.3.. A-stable: yes, L-stable: yes"
                  $<TARGET_FILE:geomint-scheme> --analyse --tableau ${_test_tableaux}/radau_iia3.tableau)
-geomint_cli_test(geomint_cli_scheme_analyse_tableau_text zero "gauss-2 .rkn, 2 stages.*order 4 .P-series.*up to order 8.*symplectic: yes"
+geomint_cli_test(geomint_cli_scheme_analyse_tableau_text zero "gauss-2 .rkn, 2 stages.*order 4 .Nystrom trees up to order 8.*symplectic: yes"
                  $<TARGET_FILE:geomint-scheme> --analyse --tableau ${_tableaux}/gauss2.tableau)
 # Usage errors: --tableau needs a file (and names --print-tableau), is analysed with --analyse,
 # excludes the built-in scheme's flags; a bad or missing file names the file and the line.
