@@ -29,8 +29,11 @@ echo "observed orders (3 systems, 4 schemes, all families, m = 2..8, 50 digits):
   --digits 50 --tau 0.25 --no-monitor --csv > "$out/symplectic.csv" 2> "$out/symplectic.log"
 echo "symplecticity defects (50 digits, tau = 0.25): $(tail -n 1 "$out/symplectic.log")"
 
+# The long-time study measures the energy error itself, and all 21 of its runs pass the step
+# monitor (the same table with the monitor on): without the monitor's two measurements per step
+# it takes half the time.
 "$build/tools/studies/geomint-symplectic" --system pendulum,kepler,charged --scheme all --nodes all --m 4 \
-  --digits 16 --tau 0.1 --long-steps 100000 --csv > "$out/energy.csv" 2> "$out/energy.log"
+  --digits 16 --tau 0.1 --long-steps 100000 --no-monitor --csv > "$out/energy.csv" 2> "$out/energy.log"
 echo "long-time energy (10^5 steps, tau = 0.1, m = 4, double): $(tail -n 1 "$out/energy.log")"
 
 python3 "$root/tools/studies/tables.py" "$out" > "$out/tables.md"
