@@ -20,9 +20,11 @@
 ///
 /// Jets of different K mix: one of fewer directions is one of more that does not depend on the
 /// others (its coefficients are those of the subsets of its own directions); a constant (T or an
-/// arithmetic value) is a jet of K = 0. Storage is on the heap (std::vector).
+/// arithmetic value) is a jet of K = 0. Storage: the coefficients of small K inline (no
+/// allocation: most jets of a field evaluation are short-lived temporaries), more on the heap.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -38,11 +40,76 @@
 
 namespace geomint {
 
+namespace ad_detail {
+/// n values of T: inline up to N, on the heap beyond. Grows only.
+template <class T, std::size_t N>
+class small_buffer {
+ public:
+  small_buffer(std::size_t n, const T& value) { assign(n, value); }
+  /// Copies and moves touch the used values only.
+  small_buffer(const small_buffer& o) : size_(o.size_), large_(o.large_) { copy_small(o); }
+  small_buffer(small_buffer&& o) noexcept : size_(o.size_), large_(std::move(o.large_)) { copy_small(o); }
+  small_buffer& operator=(const small_buffer& o) {
+    if (this != &o) {
+      size_ = o.size_;
+      large_ = o.large_;
+      copy_small(o);
+    }
+    return *this;
+  }
+  small_buffer& operator=(small_buffer&& o) noexcept {
+    if (this != &o) {
+      size_ = o.size_;
+      large_ = std::move(o.large_);
+      copy_small(o);
+    }
+    return *this;
+  }
+  ~small_buffer() = default;
+  std::size_t size() const { return size_; }
+  T& operator[](std::size_t i) { return size_ <= N ? small_[i] : large_[i]; }
+  const T& operator[](std::size_t i) const { return size_ <= N ? small_[i] : large_[i]; }
+  void assign(std::size_t n, const T& value) {
+    if (n <= N) {
+      for (std::size_t i = 0; i < n; ++i) small_[i] = value;
+      large_.clear();
+    } else {
+      large_.assign(n, value);
+    }
+    size_ = n;
+  }
+  /// Grows to n values, the new ones zero.
+  void widen(std::size_t n) {
+    if (n <= size_) return;
+    if (n <= N) {
+      for (std::size_t i = size_; i < n; ++i) small_[i] = T(0);
+    } else {
+      if (size_ <= N) large_.assign(small_.begin(), small_.begin() + static_cast<std::ptrdiff_t>(size_));
+      large_.resize(n, T(0));
+    }
+    size_ = n;
+  }
+
+ private:
+  void copy_small(const small_buffer& o) {
+    if (size_ <= N)
+      for (std::size_t i = 0; i < size_; ++i) small_[i] = o.small_[i];
+  }
+  std::size_t size_ = 0;
+  std::array<T, N> small_;  // (values beyond size_ are never read)
+  std::vector<T> large_;
+};
+}  // namespace ad_detail
+
 template <class T>
 class jet {
  public:
   /// The largest number of directions (2^K coefficients; 2^20 is already 8 MB in double).
   static constexpr int max_directions = 20;
+
+  /// The coefficients stored inline: K <= 4 for built-in types, K <= 2 for wider ones (for
+  /// which the arithmetic, not the allocation, dominates).
+  static constexpr std::size_t inline_coefficients = sizeof(T) <= sizeof(long double) ? 16 : 4;
 
   jet() : c_(1, T(0)) {}
   /// A constant. Implicit, so constants mix freely with jets.
@@ -102,7 +169,7 @@ class jet {
       return scale(a);
     }
     const std::size_t n = std::max(c_.size(), o.c_.size());
-    std::vector<T> out(n, T(0));
+    coefficients out(n, T(0));
     const std::size_t na = c_.size(), nb = o.c_.size();
     for (std::size_t s = 0; s < n; ++s) {
       T& sum = out[s];
@@ -120,7 +187,7 @@ class jet {
     return *this *= reciprocal(o);
   }
   jet& scale(const T& a) {
-    for (T& x : c_) x *= a;
+    for (std::size_t s = 0; s < c_.size(); ++s) c_[s] *= a;
     return *this;
   }
 
@@ -150,9 +217,10 @@ class jet {
  private:
   /// Embeds the jet in `size` coefficients (the added directions with coefficient zero).
   void widen(std::size_t size) {
-    if (size > c_.size()) c_.resize(size, T(0));
+    c_.widen(size);
   }
-  std::vector<T> c_;
+  using coefficients = ad_detail::small_buffer<T, inline_coefficients>;
+  coefficients c_;
 };
 
 template <class X>
