@@ -55,9 +55,8 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                also the modified Hamiltonian's terms h^(|t|-1) c H(t) per free tree (rk: every\n"
     "                H; scheme, rkn, nystrom: H = |p|^2/2 + V(q); prk: H = T(p) + V(q)).\n"
     "                Trees: q/p (two colours) or y (one colour) with the children in brackets.\n"
-    "With --system S (a natural system of at most 2 degrees of freedom; the compile time and stack\n"
-    "size of the nested duals bound the dimension) it runs the\n"
-    "method (the scheme's stepper or the tableau's) N steps at each tau and predicts its energy\n"
+    "With --system S (a natural system, any number of degrees of freedom) it runs the method (the\n"
+    "scheme's stepper or the tableau's) N steps at each tau and predicts its energy\n"
     "error from the modified field, evaluated along the numerical solution with the system's\n"
     "derivatives by automatic differentiation:\n"
     "  symplectic:   H(y_n) - H(y_0) = -sum_{j=1..K} h^(p+j-1) (H_{p+j}(y_n) - H_{p+j}(y_0)), the\n"
@@ -331,8 +330,8 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
 template <class T, class List>
 int run(List list, const options& o, const method_series& m) {
   return with_system(list, o.system, [&]<class Sys>() -> int {
-    if constexpr (!natural_system<Sys> || Sys::dof > 2) {
-      throw cli::usage_error("--system " + o.system + ": the prediction needs a natural system of at most 2 degrees of freedom");
+    if constexpr (!natural_system<Sys>) {
+      throw cli::usage_error("--system " + o.system + ": the prediction needs a natural system");
     } else {
       if (!o.scheme.empty()) {
         try {
