@@ -87,7 +87,7 @@ TEST_CASE("Gauss s = 2 over Q(sqrt 3) is the Galerkin VI m = 2 on natural system
   const exact_rkn_tableau galerkin = galerkin_tableau<2>();
   using std::sqrt;
   const T nodes[2] = {T(1) / 2 - sqrt(T(3)) / 6, T(1) / 2 + sqrt(T(3)) / 6};
-  const numeric_rkn_tableau<T> g = numeric_tableau<T>(galerkin, nodes);
+  const methods::tableau_data<T> g = numeric_tableau<T>(galerkin, nodes);
   REQUIRE(gauss.stages == 2);
   using std::abs;
   const T tolerance = T(1) / T("1e45");

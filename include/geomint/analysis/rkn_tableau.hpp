@@ -29,7 +29,8 @@
 /// stage values themselves (componentwise product). Either way every quantity derived from
 /// the tableau (order conditions, symplecticity, symmetry, stability) is an exact rational
 /// although the nodes may be irrational; `numeric_tableau` gives the usual (c, a, bbar, b) in
-/// any scalar type from the exact data and the numerically computed nodes (core/nodes.hpp).
+/// any scalar type from the exact data and the numerically computed nodes (core/nodes.hpp), as
+/// the methods' run-time tableau (methods::tableau_data, methods/tableau.hpp).
 
 #include <array>
 #include <concepts>
@@ -39,11 +40,13 @@
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
+#include <vector>
 
 #include "geomint/core/big_rational.hpp"
 #include "geomint/core/nodes.hpp"
 #include "geomint/core/rational.hpp"
 #include "geomint/methods/collocation_rkn.hpp"
+#include "geomint/methods/tableau.hpp"
 
 namespace geomint {
 
@@ -594,15 +597,6 @@ constexpr exact_rkn_tableau collocation_tableau_from_polynomial(const std::array
   return collocation_tableau_from_polynomial<rational, S + 1>(coefficients);
 }
 
-/// The usual numeric tableau (c_i, a_ij, bbar_j, b_j) in a scalar type T.
-template <class T>
-struct numeric_rkn_tableau {
-  int stages = 0;
-  std::array<T, max_exact_stages> c{};
-  std::array<std::array<T, max_exact_stages>, max_exact_stages> a{};
-  std::array<T, max_exact_stages> bbar{}, b{};
-};
-
 namespace analysis::detail {
 template <class T>
 T to_scalar(const exact_number& x) {
@@ -615,14 +609,22 @@ T to_scalar(const exact_number& x) {
 }
 }  // namespace analysis::detail
 
-/// Values-basis tableau from the exact one: for the monomial basis, with V_ik = c_i^k at the
-/// numerically computed nodes c (ascending), a = V A V^{-1}, bbar = bbar V^{-1}, b = b V^{-1}.
-/// Accuracy: the Vandermonde solve loses about log10(cond V) digits (some 5 for s = 8).
+/// The usual tableau (c, a, bbar, b) in T from the exact one, as the methods' run-time form of
+/// an RKN tableau (methods/tableau.hpp; kind rkn). For the monomial basis, with V_ik = c_i^k at
+/// the numerically computed nodes c (ascending), a = V A V^{-1}, bbar = bbar V^{-1},
+/// b = b V^{-1}. Accuracy: the Vandermonde solve loses about log10(cond V) digits (some 5 for
+/// s = 8).
 template <class T>
-numeric_rkn_tableau<T> numeric_tableau(const exact_rkn_tableau& t, const T* nodes_ascending) {
-  numeric_rkn_tableau<T> out;
+methods::tableau_data<T> numeric_tableau(const exact_rkn_tableau& t, const T* nodes_ascending) {
   const int s = t.stages;
+  const auto n = static_cast<std::size_t>(s);
+  methods::tableau_data<T> out;
+  out.kind = methods::method_kind::rkn;
   out.stages = s;
+  out.c.assign(n, T(0));
+  out.bbar.assign(n, T(0));
+  out.b.assign(n, T(0));
+  out.a.assign(n, std::vector<T>(n, T(0)));
   T A[max_exact_stages][max_exact_stages], bb[max_exact_stages], b[max_exact_stages];
   for (int i = 0; i < s; ++i) {
     for (int j = 0; j < s; ++j) A[i][j] = analysis::detail::to_scalar<T>(t.a[i][j]);
@@ -692,28 +694,19 @@ numeric_rkn_tableau<T> numeric_tableau(const exact_rkn_tableau& t, const T* node
 
 /// The numeric tableau of LPF (m, Family) in T: the collocation method on the family's interior
 /// nodes (core/nodes.hpp), by the construction the schemes use (methods/collocation_rkn.hpp; no
-/// Vandermonde solve, every entry to a few ulps of T).
+/// Vandermonde solve, every entry to a few ulps of T), in the run-time form numeric_tableau gives.
 template <int M, class Family, class T>
-numeric_rkn_tableau<T> lpf_numeric_tableau() {
+methods::tableau_data<T> lpf_numeric_tableau() {
   static_assert(M >= 2 && M - 1 <= max_exact_stages, "geomint::lpf_numeric_tableau: m must be 2..9");
   constexpr int S = M - 1;
   const auto c = nodes<Family, M, T>();
   std::array<T, S> interior;
   for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) interior[i] = c[i + 1];
-  const methods::rkn<T, S> t = methods::collocation_rkn<T, S>(interior);
-  numeric_rkn_tableau<T> out;
-  out.stages = S;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) {
-    out.c[i] = t.c[i];
-    out.bbar[i] = t.bbar[i];
-    out.b[i] = t.b[i];
-    for (std::size_t j = 0; j < static_cast<std::size_t>(S); ++j) out.a[i][j] = t.a[i][j];
-  }
-  return out;
+  return methods::data_of(methods::collocation_rkn<T, S>(interior));
 }
 /// The numeric tableau of the Galerkin VI of degree m in T (Gauss nodes from core/nodes.hpp).
 template <int M, class T>
-numeric_rkn_tableau<T> galerkin_numeric_tableau() {
+methods::tableau_data<T> galerkin_numeric_tableau() {
   const auto c = nodes<gauss_interior, M + 1, T>();
   return numeric_tableau<T>(galerkin_tableau<M>(), c.data() + 1);
 }
