@@ -57,7 +57,7 @@ static_assert(table.order[table.best] == 4);
 
 /// One step of the RKN method (c, a, bbar, b) for q'' = -sin q: stages by fixed-point iteration.
 template <class T>
-void rkn_step(const geomint::numeric_rkn_tableau<T>& t, const T& q, const T& p, const T& tau, T& q1, T& p1) {
+void rkn_step(const geomint::methods::tableau_data<T>& t, const T& q, const T& p, const T& tau, T& q1, T& p1) {
   using std::abs;
   using std::sin;
   const int s = t.stages;

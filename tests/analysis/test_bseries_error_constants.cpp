@@ -12,6 +12,7 @@
 #include "geomint/analysis/order_conditions.hpp"
 #include "geomint/methods/catalogue.hpp"
 #include "geomint/methods/tableau_file.hpp"
+#include "field_numbers.hpp"
 
 // A named namespace: the suites of a folder are compiled as one unit (UNITY_BUILD).
 namespace error_constants_test {
@@ -19,9 +20,9 @@ namespace error_constants_test {
 using namespace geomint;
 using methods::exact_rational;
 using methods::field_element;
+using geomint::test::field_numbers::q;
 using T = boost::multiprecision::cpp_bin_float_50;
 
-field_element q(long n, long d = 1) { return field_element(exact_rational(n, d)); }
 field_element from_exact(const exact_number& x) { return field_element(exact_rational(x.num.str()) / exact_rational(x.den().str())); }
 
 template <class Method>
@@ -87,7 +88,7 @@ TEST_CASE("Gauss s = 2 over Q(sqrt 3) is the Galerkin VI m = 2 on natural system
   const exact_rkn_tableau galerkin = galerkin_tableau<2>();
   using std::sqrt;
   const T nodes[2] = {T(1) / 2 - sqrt(T(3)) / 6, T(1) / 2 + sqrt(T(3)) / 6};
-  const numeric_rkn_tableau<T> g = numeric_tableau<T>(galerkin, nodes);
+  const methods::tableau_data<T> g = numeric_tableau<T>(galerkin, nodes);
   REQUIRE(gauss.stages == 2);
   using std::abs;
   const T tolerance = T(1) / T("1e45");

@@ -136,22 +136,6 @@ TEST_CASE("bseries partitioned form: Stormer-Verlet as an RKN is Lobatto IIIA-II
   CHECK(is_nystrom_tree(trees, trees.find(1, {trees.leaf(1)}), false));
 }
 
-/// A library tableau with rational nodes (the interior nodes, ascending) as the library's
-/// run-time RKN tableau in stage values (numeric_tableau over exact rationals).
-tableau rkn_of(const geomint::exact_rkn_tableau& t, const std::vector<Q>& nodes) {
-  const auto n = geomint::numeric_tableau<Q>(t, nodes.data());
-  tableau d;
-  d.kind = geomint::methods::method_kind::rkn;
-  d.stages = t.stages;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(t.stages); ++i) {
-    d.c.push_back(n.c[i]);
-    d.bbar.push_back(n.bbar[i]);
-    d.b.push_back(n.b[i]);
-    d.a.emplace_back(n.a[i].begin(), n.a[i].begin() + t.stages);
-  }
-  return d;
-}
-
 TEST_CASE("bseries method analysis: library schemes agree with the RKN order conditions", "[bseries]") {
   using namespace geomint;
   // Equispaced LPF: interior nodes a/m (the LPF paper's eq. 8); midpoint and trapezoidal keep
@@ -170,7 +154,7 @@ TEST_CASE("bseries method analysis: library schemes agree with the RKN order con
     const order_summary independent = order_analysis(s.t);
     REQUIRE_FALSE(independent.order_is_lower_bound);
     REQUIRE((s.t.basis == stage_basis::values || static_cast<int>(s.nodes.size()) == s.t.stages));
-    const method_analysis r = analyse_method(rkn_of(s.t, s.nodes));
+    const method_analysis r = analyse_method(numeric_tableau<Q>(s.t, s.nodes.data()));
     CHECK(r.order == independent.order);
     CHECK(r.symplectic == symplecticity(s.t).symplectic);
   }

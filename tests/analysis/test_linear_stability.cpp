@@ -31,7 +31,7 @@ exact_rkn_tableau nystrom4() {
 T to_t(const exact_number& x) { return T(x.num.str()) / T(x.den().str()); }
 
 /// One step of y'' = -y: (q, tau p) -> (q1, tau p1).
-std::pair<T, T> harmonic_step(const numeric_rkn_tableau<T>& t, const T& q, const T& tau_p, const T& tau) {
+std::pair<T, T> harmonic_step(const methods::tableau_data<T>& t, const T& q, const T& tau_p, const T& tau) {
   const int s = t.stages;
   const T z = tau * tau;
   // (I + z A) Q = q + c tau p, Gaussian elimination with partial pivoting.
@@ -66,7 +66,7 @@ std::pair<T, T> harmonic_step(const numeric_rkn_tableau<T>& t, const T& q, const
 }
 
 /// max |(q_n, tau p_n)|, n <= steps, from (1, 0).
-T largest_amplitude(const numeric_rkn_tableau<T>& t, const T& tau, int steps) {
+T largest_amplitude(const methods::tableau_data<T>& t, const T& tau, int steps) {
   using std::abs;
   T q(1), p(0), largest(1);
   for (int n = 0; n < steps; ++n) {
@@ -77,7 +77,7 @@ T largest_amplitude(const numeric_rkn_tableau<T>& t, const T& tau, int steps) {
 }
 
 /// Bounded at 9 points inside (0, tau*), growth just outside (at z = (1 + 1/10) z*).
-void check_interval(const exact_rkn_tableau& exact, const numeric_rkn_tableau<T>& t, const std::string& label) {
+void check_interval(const exact_rkn_tableau& exact, const methods::tableau_data<T>& t, const std::string& label) {
   using std::sqrt;
   const stability_interval iv = linear_stability_interval(linear_stability(exact)).refined(120);
   REQUIRE(!iv.empty);
@@ -99,7 +99,7 @@ void check_interval(const exact_rkn_tableau& exact, const numeric_rkn_tableau<T>
 TEST_CASE("linear stability: Nystrom's order-4 method is stable exactly on its interval of absolute stability",
           "[analysis][stability]") {
   const exact_rkn_tableau exact = nystrom4();
-  const numeric_rkn_tableau<T> t = numeric_tableau<T>(exact, nullptr);
+  const methods::tableau_data<T> t = numeric_tableau<T>(exact, nullptr);
   check_interval(exact, t, "nystrom4");
   // The trace alone (|tr M| <= 2 up to tau = sqrt 12) is not the stability condition: at tau = 3
   // the solution grows.
@@ -118,7 +118,7 @@ TEST_CASE("linear stability: phase lag and dissipation measured from the numeric
   using std::sqrt;
   const exact_rkn_tableau exact = nystrom4();
   const linear_stability_result r = linear_stability(exact);
-  const numeric_rkn_tableau<T> t = numeric_tableau<T>(exact, nullptr);
+  const methods::tableau_data<T> t = numeric_tableau<T>(exact, nullptr);
   // phi(H) / H^(q+1) -> c_phi and d(H) / H^(r+1) -> c_d with relative corrections O(H^2).
   const T H = T(1) / T(1000);
   const auto [m11, m21] = harmonic_step(t, T(1), T(0), H);

@@ -30,7 +30,7 @@ using T = cpp_bin_float_50;
 
 /// One RKN step for q'' = -sin q: stages by fixed-point iteration until they stop changing
 /// (contraction factor ~ tau^2 max|a| < 1/10 at tau = 1/4).
-std::pair<T, T> rkn_step(const numeric_rkn_tableau<T>& t, const T& q, const T& p, const T& tau) {
+std::pair<T, T> rkn_step(const methods::tableau_data<T>& t, const T& q, const T& p, const T& tau) {
   using std::abs;
   using std::sin;
   const int s = t.stages;
@@ -58,7 +58,7 @@ std::pair<T, T> rkn_step(const numeric_rkn_tableau<T>& t, const T& q, const T& p
 }
 
 template <class Scheme>
-void check_step(const numeric_rkn_tableau<T>& t, const std::string& label) {
+void check_step(const methods::tableau_data<T>& t, const std::string& label) {
   using std::abs;
   const T tau = T(1) / T(4);
   integrator<Scheme, systems::pendulum, T> I(systems::pendulum{}, tau);
@@ -281,7 +281,7 @@ TEST_CASE("symmetry verdicts agree with stepping forward and back (repeated node
   const T tau = T(1) / T(4), q0(1), p0 = T(1) / T(2);
   for (const rational& a22 : {rational(-1, 12), rational(0)}) {
     const exact_rkn_tableau exact = at_run_time(tableau(a22));
-    const numeric_rkn_tableau<T> t = numeric_tableau<T>(exact, nullptr);
+    const methods::tableau_data<T> t = numeric_tableau<T>(exact, nullptr);
     const auto [q1, p1] = rkn_step(t, q0, p0, tau);
     const auto [q2, p2] = rkn_step(t, q1, p1, -tau);
     const T back = std::max(T(abs(q2 - q0)), T(abs(p2 - p0)));

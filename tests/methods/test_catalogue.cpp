@@ -19,6 +19,7 @@
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/methods/catalogue.hpp"
 #include "geomint/methods/tableau_method.hpp"
+#include "field_numbers.hpp"
 #include "scalar_types.hpp"
 
 namespace catalogue_test {
@@ -26,9 +27,8 @@ namespace catalogue_test {
 using namespace geomint;
 using methods::exact_rational;
 using methods::field_element;
+using geomint::test::field_numbers::q;
 using T50 = geomint::test::cpp_bin_float_50;
-
-field_element q(long p, long d = 1) { return field_element(exact_rational(p, d)); }
 
 /// Observed order from the global errors at t = 1 with N and 2N steps (log2 of their ratio) on
 /// the pendulum from rest at 1 rad, exact solution by Jacobi elliptic functions.

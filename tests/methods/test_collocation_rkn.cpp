@@ -49,7 +49,7 @@ void check_family() {
   std::array<T, S> interior;
   for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) interior[i] = nodes_of[i + 1];
   const methods::rkn<T, S> t = methods::collocation_rkn<T, S>(interior);
-  const numeric_rkn_tableau<T> e = numeric_tableau<T>(lpf_tableau<M, Family>(), nodes_of.data() + 1);
+  const methods::tableau_data<T> e = numeric_tableau<T>(lpf_tableau<M, Family>(), nodes_of.data() + 1);
   INFO("m = " << M << ", " << Family::name);
   // The Vandermonde solve of the exact route loses up to about 5 digits at s = 7.
   const T tol = geomint::test::eps_tol<T>(1000000);

@@ -28,16 +28,7 @@ template <class T, int S>
 rkn<T, S> catalogue_rkn(const std::string& name) {
   const methods::catalogue_entry* e = methods::find_in_catalogue(name);
   REQUIRE(e != nullptr);
-  const methods::nystrom_form<T> f = methods::to_scalar<T>(methods::nystrom_form_of(e->tableau()));
-  REQUIRE(f.stages == S);
-  rkn<T, S> t;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) {
-    t.c[i] = f.c[i];
-    t.bbar[i] = f.bbar[i];
-    t.b[i] = f.b[i];
-    for (std::size_t j = 0; j < static_cast<std::size_t>(S); ++j) t.a[i][j] = f.a[i][j];
-  }
-  return t;
+  return methods::rkn_of<S>(methods::to_scalar<T>(methods::nystrom_form_of(e->tableau())));
 }
 
 rational_number exact(double x) { return rational_number(x); }
@@ -151,6 +142,8 @@ TEST_CASE("symplectic rounding: a tableau that is not symplectic, or has a zero 
   rkn<double, 2> verlet = catalogue_rkn<double, 2>("stormer-verlet");
   verlet.b[1] = 0.0;
   CHECK_THROWS_AS(methods::symplecticize(verlet), std::domain_error);
+  // The fixed-size form of a run-time tableau with another number of stages.
+  CHECK_THROWS_AS((catalogue_rkn<double, 3>("stormer-verlet")), std::invalid_argument);
 }
 
 }  // namespace symplectic_rounding_test

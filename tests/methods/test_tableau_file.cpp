@@ -6,6 +6,7 @@
 #include "catch.hpp"
 #include "geomint/methods/nystrom_form.hpp"
 #include "geomint/methods/tableau_file.hpp"
+#include "field_numbers.hpp"
 
 using namespace geomint::methods;
 
@@ -25,7 +26,7 @@ int error_line(const std::string& text, const std::string& reason) {
   }
   return 0;
 }
-field_element fraction(long p, long d) { return field_element(exact_rational(p, d)); }
+using geomint::test::field_numbers::q;
 }  // namespace
 
 TEST_CASE("tableau file: a Gauss RKN tableau over Q(sqrt 3), read exactly", "[methods]") {
@@ -42,12 +43,12 @@ TEST_CASE("tableau file: a Gauss RKN tableau over Q(sqrt 3), read exactly", "[me
   CHECK(t.kind == method_kind::rkn);
   CHECK(t.stages == 2);
   CHECK(t.name == "gauss 2");
-  const field_element r = t.c[1] - fraction(1, 2);  // sqrt 3 / 6
-  CHECK(r * r == fraction(1, 12));
-  CHECK(t.bbar[1] == fraction(1, 4) - r / field_element(2));
-  CHECK(t.b[0] == fraction(1, 2));
-  CHECK(t.a[0][1] == fraction(5, 36) - r / field_element(2));
-  CHECK(t.a[1][1] == fraction(1, 36));
+  const field_element r = t.c[1] - q(1, 2);  // sqrt 3 / 6
+  CHECK(r * r == q(1, 12));
+  CHECK(t.bbar[1] == q(1, 4) - r / field_element(2));
+  CHECK(t.b[0] == q(1, 2));
+  CHECK(t.a[0][1] == q(5, 36) - r / field_element(2));
+  CHECK(t.a[1][1] == q(1, 36));
   // The Gauss weights satisfy bbar_i = b_i (1 - c_i) (the symplecticity condition of an RKN method).
   for (std::size_t i = 0; i < 2; ++i) CHECK(t.bbar[i] == t.b[i] * (field_element(1) - t.c[i]));
 }
@@ -64,7 +65,7 @@ TEST_CASE("tableau file: exact expressions of any size, the root near a point", 
   CHECK(r.to<double>() < 0);
   CHECK(r * r == field_element(2));
   CHECK(t.a[0][0] == field_element(17) - field_element(12) * r);
-  CHECK(t.b[0] == fraction(1, 4));
+  CHECK(t.b[0] == q(1, 4));
 }
 
 TEST_CASE("tableau file: every malformed file names its line", "[methods]") {
@@ -105,8 +106,8 @@ TEST_CASE("tableau file: a read tableau has its Nystrom form", "[methods]") {
       "a 0 0 0 0  1/2 0 0 0  0 1/2 0 0  0 0 1 0\n"
       "b 1/6 1/3 1/3 1/6\n");
   const auto f = nystrom_form_of(t);
-  CHECK(f.a[2][0] == fraction(1, 4));
-  CHECK(f.bbar == std::vector<field_element>{fraction(1, 6), fraction(1, 6), fraction(1, 6), field_element(0)});
+  CHECK(f.a[2][0] == q(1, 4));
+  CHECK(f.bbar == std::vector<field_element>{q(1, 6), q(1, 6), q(1, 6), field_element(0)});
   CHECK(f.explicit_positions);
   CHECK(f.explicit_velocities);
 }

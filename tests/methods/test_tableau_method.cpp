@@ -10,6 +10,7 @@
 #include "geomint/integrator.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/methods/tableau_method.hpp"
+#include "field_numbers.hpp"
 #include "scalar_types.hpp"
 
 using namespace geomint;
@@ -21,7 +22,7 @@ namespace {
 
 using R = rational;
 using F = field_element;
-F q(long p, long d) { return F(exact_rational(p, d)); }
+using geomint::test::field_numbers::q;
 F generator(std::vector<exact_rational> poly) { return F::generator(methods::algebraic_field::make(std::move(poly))); }
 
 /// Stormer-Verlet as an RKN tableau: c = (0, 1), a_21 = 1/2, bbar = (1/2, 0), b = (1/2, 1/2),

@@ -432,7 +432,7 @@ void print_one_tableau(const options& o, const std::string& family, int m) {
   for (int k = 0; k < s; ++k) std::cout << " " << t.b[k].str();
   std::cout << "\n";
   std::vector<decimal> c = stages_of(o.scheme, family, m);
-  const numeric_rkn_tableau<decimal> n = numeric_tableau<decimal>(t, c.data());
+  const methods::tableau_data<decimal> n = numeric_tableau<decimal>(t, c.data());
   std::cout << "decimal tableau (30 digits; nodes from core/nodes.hpp)\n";
   for (int i = 0; i < s; ++i) {
     std::cout << "c_" << i + 1 << " = " << digits30(n.c[static_cast<std::size_t>(i)]) << "\n  a:";

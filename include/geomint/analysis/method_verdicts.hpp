@@ -196,18 +196,13 @@ constexpr linear_stability_result oscillator_stability(const Vector& c, const Ma
   return linear_stability_from_determinants(to_qpoly(d[0]), to_qpoly(d[1]), to_qpoly(d[2]), to_qpoly(d[3]), to_qpoly(d[4]));
 }
 
-/// The RKN coefficients of a fixed-size tableau on q'' = f(q) (methods/nystrom_form.hpp's
+/// The RKN tableau of a fixed-size tableau on q'' = f(q) (methods/nystrom_form.hpp's
 /// conversion: rk and prk give c = A 1, A Ahat, b^T Ahat, bhat with Ahat = A, bhat = b for rk).
-template <class K, int S>
-struct rkn_coefficients {
-  methods::stage_vector<K, S> c{}, bbar{}, b{};
-  methods::stage_matrix<K, S> a{};
-};
 template <class Tableau>
 constexpr auto rkn_coefficients_of(const Tableau& t) {
   using K = typename Tableau::coefficient;
   constexpr std::size_t s = static_cast<std::size_t>(Tableau::stages);
-  rkn_coefficients<K, Tableau::stages> r;
+  methods::rkn<K, Tableau::stages> r;
   K sum_b(0);
   for (std::size_t j = 0; j < s; ++j) sum_b = sum_b + t.b[j];
   if constexpr (requires { t.bbar; }) {

@@ -20,18 +20,9 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "geomint/core/scalar_traits.hpp"  // exact_mantissa_arithmetic
+
 namespace geomint {
-
-/// Whether T is a number whose mantissa geomint reads directly: false here; true for Boost's
-/// cpp_bin_float with stack storage, int exponents and more than 128 bits, whose mantissa is an
-/// array of 64-bit limbs (core/multiprecision.hpp specialises this, with `backend`, `bits`
-/// (p, the leading one at bit p - 1) and `limbs`; this header parses no Boost.Multiprecision,
-/// so that files with built-in scalars stay fast to compile).
-template <class T>
-struct exact_mantissa_arithmetic : std::false_type {};
-
-template <class T>
-inline constexpr bool exact_mantissa_arithmetic_v = exact_mantissa_arithmetic<T>::value;
 
 namespace core::detail {
 /// Rounds the W-limb integer `sum` (nonzero, leading one at bit msb; `sticky`: nonzero bits

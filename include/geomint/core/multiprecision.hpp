@@ -9,21 +9,23 @@
 ///
 /// Include this header (or geomint/geomint.hpp, or any Boost.Multiprecision header before
 /// geomint's own headers) to use Boost.Multiprecision scalars with geomint.
+#include <type_traits>
+
 #include <Eigen/Core>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/eigen.hpp>
 #include <boost/multiprecision/number.hpp>
 
-#include "geomint/core/mantissa.hpp"
-#include "geomint/linalg/types.hpp"
+#include "geomint/core/scalar_traits.hpp"
 
 namespace geomint {
-/// Eigen has the traits of every Boost.Multiprecision number from here on (linalg/types.hpp).
+/// Eigen has the traits of every Boost.Multiprecision number from here on (core/scalar_traits.hpp).
 template <class Backend, boost::multiprecision::expression_template_option ET>
 struct eigen_scalar_ready<boost::multiprecision::number<Backend, ET>> : std::true_type {};
 
 /// cpp_bin_float with stack storage (Allocator void), int exponents and more than 128 bits: its
-/// mantissa is an array of 64-bit limbs, read by core/mantissa.hpp and linalg/dot.hpp.
+/// mantissa is an array of 64-bit limbs, read by core/mantissa.hpp and linalg/dot.hpp
+/// (core/scalar_traits.hpp).
 template <unsigned Digits, boost::multiprecision::backends::digit_base_type Base, int MinE, int MaxE,
           boost::multiprecision::expression_template_option ET>
   requires(boost::multiprecision::backends::cpp_bin_float<Digits, Base, void, int, MinE, MaxE>::bit_count > 128 &&

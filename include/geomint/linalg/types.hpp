@@ -7,21 +7,14 @@
 
 #include <Eigen/Core>
 
+#include "geomint/core/scalar_traits.hpp"  // eigen_scalar_ready
+
 namespace geomint {
 
 template <class S, int N>
 using vec = Eigen::Matrix<S, N, 1>;
 template <class S, int N>
 using mat = Eigen::Matrix<S, N, N>;
-
-/// Whether Eigen has the traits of scalar S: true for built-in types; for a Boost.Multiprecision
-/// number (a type with a backend_type) only once core/multiprecision.hpp is included, which
-/// specialises this trait. The integrators assert it with a message naming the include.
-template <class S>
-struct eigen_scalar_ready : std::true_type {};
-template <class S>
-  requires requires { typename S::backend_type; }
-struct eigen_scalar_ready<S> : std::false_type {};
 
 /// Bytes above which an N x N matrix of a compile-time size is kept on the heap (square_matrix):
 /// half of Eigen's limit for a fixed-size object (EIGEN_STACK_ALLOCATION_LIMIT, 128 KiB), the

@@ -31,7 +31,7 @@
 /// s = 5 is not here: the splitting field of its quartic has Galois group S4 and degree 24 (the
 /// series of Gauss s = 5, in degree 8, already cost seconds per tree order). The Gauss methods of
 /// any s as RKN tableaux over their stage algebra are `galerkin_tableau<s>` of
-/// analysis/rkn_tableau.hpp.
+/// analysis/collocation_tableaux.hpp.
 /// The coefficients are field_element over that one field (methods/number_field.hpp), solved
 /// from the conditions above in exact arithmetic.
 
@@ -42,6 +42,7 @@
 #include <utility>
 #include <vector>
 
+#include "geomint/core/orthogonal_polynomials.hpp"
 #include "geomint/methods/number_field.hpp"
 #include "geomint/methods/tableau.hpp"
 
@@ -80,19 +81,11 @@ inline field_vector solve_exact(field_matrix m, field_vector y) {
   return x;
 }
 
-/// The shifted Legendre polynomial P_n(2x - 1) over Q (constant first): (k + 1) P_{k+1} =
-/// (2k + 1) y P_k - k P_{k-1}, y = 2x - 1.
+/// The shifted Legendre polynomial P_n(2x - 1) over Q (constant first), n <= 8
+/// (core/orthogonal_polynomials.hpp).
 inline poly shifted_legendre(int n) {
-  poly prev{}, cur{exact_rational(1)};
-  const poly y{exact_rational(-1), exact_rational(2)};
-  for (int k = 0; k < n; ++k) {
-    poly next = multiply(y, cur);
-    for (auto& x : next) x *= exact_rational(2 * k + 1, k + 1);
-    next = add(next, prev, exact_rational(-k, k + 1));
-    prev = std::move(cur);
-    cur = std::move(next);
-  }
-  return cur;
+  const auto p = shifted_orthogonal_polynomial<exact_rational, 9>(shifted_orthogonal_kind::legendre, n);
+  return poly(p.begin(), p.begin() + n + 1);
 }
 
 /// Polynomials in z over Q(theta) (constant first, no zero leading coefficient).

@@ -2,7 +2,7 @@
 /// The collocation RKN method on s given nodes, in a numeric scalar T at T's full precision: the
 /// one construction of the numeric coefficients of LPF on a natural system (schemes/lpf.hpp,
 /// schemes/gauss_fixed_point.hpp) and of its numeric tableau in the analysis
-/// (analysis/rkn_tableau.hpp, lpf_numeric_tableau).
+/// (analysis/numeric_tableau.hpp, lpf_numeric_tableau).
 ///
 /// With l_j the Lagrange polynomials on the nodes c_1..c_s (Hairer, Lubich & Wanner 2006,
 /// section II.1.4, collocation; docs/references.md):

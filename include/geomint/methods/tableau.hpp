@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -234,6 +235,28 @@ tableau_data<K> data_of(const nystrom<K, S>& t) {
 }
 template <class K>
 const tableau_data<K>& data_of(const tableau_data<K>& t) {
+  return t;
+}
+
+/// The fixed-size rkn (c, a, bbar, b) of a run-time form with S stages: a tableau_data of kind
+/// rkn or nystrom, or a nystrom_form (methods/nystrom_form.hpp), whose RKN part it is (Ap, used
+/// only off natural systems, is dropped). std::invalid_argument for another number of stages.
+template <int S, class Form>
+rkn<typename decltype(Form::c)::value_type, S> rkn_of(const Form& f) {
+  if (f.stages != S || f.c.size() != static_cast<std::size_t>(S) || f.a.size() != static_cast<std::size_t>(S) ||
+      f.bbar.size() != static_cast<std::size_t>(S) || f.b.size() != static_cast<std::size_t>(S))
+    throw std::invalid_argument("geomint::methods::rkn_of<" + std::to_string(S) + ">: the tableau has " +
+                                std::to_string(f.stages) + " stages, or lacks c, a, bbar or b");
+  rkn<typename decltype(Form::c)::value_type, S> t;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) {
+    t.c[i] = f.c[i];
+    t.bbar[i] = f.bbar[i];
+    t.b[i] = f.b[i];
+    if (f.a[i].size() != static_cast<std::size_t>(S))
+      throw std::invalid_argument("geomint::methods::rkn_of<" + std::to_string(S) + ">: row " + std::to_string(i + 1) +
+                                  " of a has another length");
+    for (std::size_t j = 0; j < static_cast<std::size_t>(S); ++j) t.a[i][j] = f.a[i][j];
+  }
   return t;
 }
 

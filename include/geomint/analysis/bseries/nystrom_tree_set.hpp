@@ -78,8 +78,12 @@ class nystrom_tree_set {
       else
         for (int w = first(n - 1); w < first_[static_cast<std::size_t>(n)]; ++w)
           if (trees_[static_cast<std::size_t>(w)].fat && trees_[static_cast<std::size_t>(w)].order == n - 1) append(n, false, {w});
+      // Fat root: sons of orders summing to n - 1 (meagre sons only for q'' = f(q)).
       std::vector<int> sons;
-      add_fat(n, n - 1, 0, sons);
+      detail::for_each_sons(
+          trees_, first_[static_cast<std::size_t>(n)], n - 1, 0, sons,
+          [&](const n_tree& son) { return !(velocity_free_ && son.fat); },
+          [&](const std::vector<int>& s) { append(n, true, s); });
     }
     first_[static_cast<std::size_t>(max_order) + 1] = size();
   }
@@ -105,23 +109,6 @@ class nystrom_tree_set {
   }
 
  private:
-  /// Appends the fat trees of order n whose sons, beyond `sons`, have indices >= from and orders
-  /// summing to `remaining`.
-  void add_fat(int n, int remaining, int from, std::vector<int>& sons) {
-    if (remaining == 0) {
-      append(n, true, sons);
-      return;
-    }
-    for (int u = from; u < first(n); ++u) {
-      const n_tree& son = trees_[static_cast<std::size_t>(u)];
-      if (son.order > remaining) break;  // trees are by order
-      if (velocity_free_ && son.fat) continue;
-      sons.push_back(u);
-      add_fat(n, remaining - son.order, u, sons);
-      sons.pop_back();
-    }
-  }
-
   void append(int n, bool fat, const std::vector<int>& sons) {
     n_tree t;
     t.order = n;

@@ -73,6 +73,27 @@ void set_symmetry_and_density(Tree& t, int n, const std::vector<int>& sons, cons
     t.sigma *= run * u.sigma;  // (multiplicity)! built up one factor per repeat
   }
 }
+
+/// The sons of a new root: calls emit(sons) for every list of indices into `trees` (a list by
+/// order), ascending with repetition, below `end`, from `from` on, whose orders sum to
+/// `remaining` and which `admissible(tree)` accepts; `sons` holds the list built so far. emit
+/// may append to `trees` (only indices below `end` are read).
+template <class Tree, class Admissible, class Emit>
+void for_each_sons(const std::vector<Tree>& trees, int end, int remaining, int from, std::vector<int>& sons,
+                   const Admissible& admissible, const Emit& emit) {
+  if (remaining == 0) {
+    emit(sons);
+    return;
+  }
+  for (int u = from; u < end; ++u) {
+    const int order = trees[static_cast<std::size_t>(u)].order;
+    if (order > remaining) break;  // trees are by order
+    if (!admissible(trees[static_cast<std::size_t>(u)])) continue;
+    sons.push_back(u);
+    for_each_sons(trees, end, remaining - order, u, sons, admissible, emit);
+    sons.pop_back();
+  }
+}
 }  // namespace detail
 
 /// All (one- or two-coloured) rooted trees up to an order, by order; within an order, by root
@@ -93,7 +114,9 @@ class tree_set {
       first_[static_cast<std::size_t>(n)] = size();
       for (int colour = 0; colour < colours; ++colour) {
         std::vector<int> subtrees;
-        add_trees(n, colour, n - 1, 0, subtrees);
+        detail::for_each_sons(
+            trees_, first(n), n - 1, 0, subtrees, [](const rooted_tree&) { return true; },
+            [&](const std::vector<int>& sons) { append(n, colour, sons); });
       }
     }
     first_[static_cast<std::size_t>(max_order) + 1] = size();
@@ -136,21 +159,6 @@ class tree_set {
   }
 
  private:
-  /// Appends every tree of order n with this root colour whose subtrees, beyond `subtrees`, have
-  /// indices >= from and orders summing to `remaining`.
-  void add_trees(int n, int colour, int remaining, int from, std::vector<int>& subtrees) {
-    if (remaining == 0) {
-      append(n, colour, subtrees);
-      return;
-    }
-    for (int u = from; u < first(n); ++u) {
-      if (trees_[static_cast<std::size_t>(u)].order > remaining) break;  // trees are by order
-      subtrees.push_back(u);
-      add_trees(n, colour, remaining - trees_[static_cast<std::size_t>(u)].order, u, subtrees);
-      subtrees.pop_back();
-    }
-  }
-
   void append(int n, int colour, const std::vector<int>& subtrees) {
     rooted_tree t;
     t.order = n;
