@@ -1,8 +1,8 @@
 #pragma once
 /// Numerical values of the elementary differentials F(t)(y) of one- and two-colour trees
 /// (trees.hpp) for a vector field given as a functor templated on its scalar, with the field's
-/// own derivatives by automatic differentiation (ad/dual.hpp), in any scalar T (double,
-/// Boost.Multiprecision).
+/// own derivatives by automatic differentiation (ad/multilinear_jet.hpp, ad/dual.hpp), in any
+/// scalar T (double, Boost.Multiprecision).
 ///
 /// HLW (Hairer, Lubich, Wanner, Geometric Numerical Integration, 2nd ed. 2006), section III.1.2
 /// (one colour): F(single vertex) = f(y), F([t_1, ..., t_m]) = f^(m)(y)[F(t_1), ..., F(t_m)];
@@ -12,9 +12,10 @@
 /// colour of a child asks for is the directional derivative along F(t_i) as a full vector.
 ///
 /// The k-th mixed directional derivative f^(k)(y)[u_1, ..., u_k] is the coefficient of
-/// e_1 e_2 ... e_k in f(y + e_1 u_1 + ... + e_k u_k) with k nested dual levels, one direction
-/// each (dual<dual<...<T, 1>...>, 1>): every level differentiates once, exactly, so the result
-/// has no truncation error (only the rounding of T). The cost of one evaluation grows as 3^k.
+/// e_1 e_2 ... e_k in f(y + e_1 u_1 + ... + e_k u_k), evaluated once in the multilinear jet
+/// scalar jet<T> with k directions (ad/multilinear_jet.hpp): exact, with no truncation error
+/// (only the rounding of T), one instantiation of the field for every order, 3^k
+/// multiplications per product.
 ///
 /// A field is a type with `static constexpr int dimension` (the length of y),
 /// `static constexpr int colour_split` (the length of the colour-0 block y_0; the whole y for
@@ -30,66 +31,19 @@
 #include <vector>
 
 #include "geomint/ad/dual.hpp"
+#include "geomint/ad/multilinear_jet.hpp"
 #include "geomint/analysis/bseries/trees.hpp"
-#include "geomint/core/dispatch.hpp"
 #include "geomint/linalg/types.hpp"
+#include "geomint/mechanics/lagrangian.hpp"
 
 namespace geomint::analysis::bseries {
 
 /// The largest derivative order evaluated (a vertex with at most this many children): every
-/// two-colour tree the generator accepts (order 9), one-colour trees up to order 9.
+/// two-colour tree the generator accepts (order 9), one-colour trees up to order 9. A bound on
+/// the 2^k coefficients of a jet, not on the types instantiated.
 inline constexpr int max_derivative_order = 8;
 
 namespace detail {
-/// K nested dual levels over T, one direction each.
-template <class T, int K>
-struct nested_dual {
-  using type = dual<typename nested_dual<T, K - 1>::type, 1>;
-};
-template <class T>
-struct nested_dual<T, 0> {
-  using type = T;
-};
-template <class T, int K>
-using nested_dual_t = typename nested_dual<T, K>::type;
-
-/// y + e_1 u[0] + ... + e_K u[K-1] (level k carries the direction u[k-1]).
-template <class T, int K>
-nested_dual_t<T, K> perturbed(const T& y, const T* u) {
-  if constexpr (K == 0) {
-    return y;
-  } else {
-    nested_dual_t<T, K> x(perturbed<T, K - 1>(y, u));
-    x.d[0] = nested_dual_t<T, K - 1>(u[K - 1]);
-    return x;
-  }
-}
-
-/// The coefficient of e_1 ... e_K.
-template <class T, int K>
-T mixed_part(const nested_dual_t<T, K>& x) {
-  if constexpr (K == 0) return x;
-  else return mixed_part<T, K - 1>(x.d[0]);
-}
-
-/// f^(K)(y)[u_1, ..., u_K].
-template <int K, class Field, class T>
-vec<T, Field::dimension> directional_derivative(const Field& f, const vec<T, Field::dimension>& y,
-                                                const std::vector<const vec<T, Field::dimension>*>& u) {
-  constexpr int D = Field::dimension;
-  using S = nested_dual_t<T, K>;
-  vec<S, D> x;
-  for (int i = 0; i < D; ++i) {
-    T directions[K > 0 ? K : 1];
-    for (int k = 0; k < K; ++k) directions[k] = (*u[static_cast<std::size_t>(k)])[i];
-    x[i] = perturbed<T, K>(y[i], directions);
-  }
-  const vec<S, D> fx = f.template operator()<S>(x);
-  vec<T, D> out;
-  for (int i = 0; i < D; ++i) out[i] = mixed_part<T, K>(fx[i]);
-  return out;
-}
-
 /// grad V(q) of a scalar functor V at q in the scalar S, by one dual level of n directions.
 template <int n, class S, class Potential>
 vec<S, n> gradient(const Potential& potential, const vec<S, n>& q) {
@@ -107,12 +61,23 @@ vec<S, n> gradient(const Potential& potential, const vec<S, n>& q) {
 template <class Field, class T>
 vec<T, Field::dimension> directional_derivative(const Field& f, const vec<T, Field::dimension>& y,
                                                 const std::vector<const vec<T, Field::dimension>*>& u) {
+  constexpr int D = Field::dimension;
   if (u.size() > static_cast<std::size_t>(max_derivative_order))
     throw std::invalid_argument("geomint::analysis::bseries::directional_derivative: derivative order " +
                                 std::to_string(u.size()) + " above " + std::to_string(max_derivative_order));
-  return with_int<0, max_derivative_order>(static_cast<int>(u.size()), [&]<int K>() {
-    return detail::directional_derivative<K>(f, y, u);
-  });
+  if (u.empty()) return f.template operator()<T>(y);
+  using S = jet<T>;
+  vec<S, D> x;
+  std::vector<T> directions(u.size());
+  for (int i = 0; i < D; ++i) {
+    for (std::size_t k = 0; k < u.size(); ++k) directions[k] = (*u[k])[i];
+    x[i] = S::variable(y[i], directions);
+  }
+  const vec<S, D> fx = f.template operator()<S>(x);
+  const std::size_t all = (std::size_t{1} << u.size()) - 1;  // the subset {e_1, ..., e_k}
+  vec<T, D> out;
+  for (int i = 0; i < D; ++i) out[i] = fx[i].coefficient(all);
+  return out;
 }
 
 /// F(t)(y) for every tree t of `trees` (the whole vector y; for two colours zero outside the
@@ -155,8 +120,10 @@ std::vector<vec<T, Field::dimension>> elementary_differentials(const tree_set& t
 }
 
 /// q' = M^{-1} p (colour 0), p' = -grad V(q) (colour 1) for a natural system Sys
-/// (`Sys::potential<S>`, `Sys::mass_matrix<S>`: mechanics/lagrangian.hpp), y = (q, p); grad V by
-/// AD, M^{-1} computed once in T.
+/// (`Sys::potential<S>`, `Sys::mass_matrix<S>`: mechanics/lagrangian.hpp), y = (q, p); grad V
+/// from the system's `potential_gradient<S>` if it supplies one, else by one dual level of dof
+/// directions over S (dual<jet<T>, dof> inside a directional derivative); M^{-1} computed once
+/// in T.
 template <class Sys, class T>
 struct natural_field {
   static constexpr int dof = Sys::dof;
@@ -167,8 +134,11 @@ struct natural_field {
   template <class S>
   vec<S, dimension> operator()(const vec<S, dimension>& y) const {
     const vec<S, dof> q = y.head(dof);
-    const vec<S, dof> grad =
-        detail::gradient<dof, S>([](const auto& x) { return Sys::template potential<typename std::decay_t<decltype(x)>::Scalar>(x); }, q);
+    vec<S, dof> grad;
+    if constexpr (mechanics::detail::supplies_potential_gradient<Sys, S>)
+      grad = Sys::template potential_gradient<S>(q);
+    else
+      grad = detail::gradient<dof, S>([](const auto& x) { return Sys::template potential<typename std::decay_t<decltype(x)>::Scalar>(x); }, q);
     vec<S, dimension> out;
     for (int i = 0; i < dof; ++i) {
       S v(0);

@@ -1,0 +1,446 @@
+#pragma once
+/// A multilinear jet: a scalar of the truncated algebra T[e_1, ..., e_K] / (e_1^2, ..., e_K^2),
+/// K chosen at run time, for mixed directional derivatives of any order in one evaluation.
+///
+/// A jet holds 2^K coefficients x_S, one per subset S of {1..K} (a bitmask; S = 0 is the value),
+/// x = sum_S x_S prod_{k in S} e_k. The product is the subset convolution
+/// (xy)_S = sum_{A subset S} x_A y_{S\A} (3^K multiplications). Evaluating a function f at
+/// y + e_1 u_1 + ... + e_K u_K gives f^(k)(y)[u_{i_1}, ..., u_{i_k}] as the coefficient of
+/// e_{i_1} ... e_{i_k}: exactly, with no truncation error (only the rounding of T). Where nested
+/// dual levels (ad/dual.hpp) need one type per order, a jet is one type for every order.
+///
+/// Elementary functions: x = x_0 + n with n nilpotent (n^(K+1) = 0, every monomial of degree
+/// above K repeats some e_k), so f(x) = sum_{k=0}^{K} f^(k)(x_0) / k! n^k exactly, summed by
+/// Horner's scheme; the Taylor coefficients are the textbook ones (Abramowitz & Stegun, ch. 4),
+/// or, for the inverse trigonometric functions, those of their derivatives' power series
+/// (Griewank & Walther, Evaluating Derivatives, 2nd ed., SIAM 2008, section 13.2). Values come
+/// from the scalar's functions by unqualified calls (std:: for built-in types, ADL for
+/// Boost.Multiprecision), sin, cos and 1/sqrt through core/elementary.hpp (fast in
+/// multiprecision). Comparisons look at the value only.
+///
+/// Jets of different K mix: one of fewer directions is one of more that does not depend on the
+/// others (its coefficients are those of the subsets of its own directions); a constant (T or an
+/// arithmetic value) is a jet of K = 0. Storage is on the heap (std::vector).
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geomint/core/decimal.hpp"
+#include "geomint/core/elementary.hpp"
+
+namespace geomint {
+
+template <class T>
+class jet {
+ public:
+  /// The largest number of directions (2^K coefficients; 2^20 is already 8 MB in double).
+  static constexpr int max_directions = 20;
+
+  jet() : c_(1, T(0)) {}
+  /// A constant. Implicit, so constants mix freely with jets.
+  jet(const T& value) : c_(1, value) {}  // NOLINT
+  template <class S>
+    requires(std::is_arithmetic_v<S> && !std::is_same_v<S, T>)
+  jet(S value) : c_(1, T(value)) {}  // NOLINT
+  /// A decimal constant read in the precision of T (core/decimal.hpp: from_decimal<jet<T>>).
+  explicit jet(const char* decimal) : c_(1, from_decimal<T>(decimal)) {}
+
+  /// value + sum_k directions[k] e_{k+1}: the point y_i + e_1 u_1[i] + ... + e_K u_K[i].
+  static jet variable(const T& value, const std::vector<T>& directions) {
+    jet x = zero(static_cast<int>(directions.size()));
+    x.c_[0] = value;
+    for (std::size_t k = 0; k < directions.size(); ++k) x.c_[std::size_t{1} << k] = directions[k];
+    return x;
+  }
+  /// The zero jet of `directions` directions (all 2^K coefficients stored).
+  static jet zero(int directions) {
+    if (directions < 0 || directions > max_directions)
+      throw std::invalid_argument("geomint::jet: " + std::to_string(directions) + " directions, at most " +
+                                  std::to_string(max_directions));
+    jet x;
+    x.c_.assign(std::size_t{1} << directions, T(0));
+    return x;
+  }
+
+  /// K, the number of directions stored.
+  int directions() const {
+    int k = 0;
+    while ((std::size_t{1} << k) < c_.size()) ++k;
+    return k;
+  }
+  std::size_t size() const { return c_.size(); }
+  const T& value() const { return c_[0]; }
+  /// The coefficient of prod_{k in S} e_{k+1} (bit k of `subset` set for e_{k+1}); zero for a
+  /// subset beyond the stored directions.
+  T coefficient(std::size_t subset) const { return subset < c_.size() ? c_[subset] : T(0); }
+  T& operator[](std::size_t subset) { return c_[subset]; }
+  const T& operator[](std::size_t subset) const { return c_[subset]; }
+
+  jet& operator+=(const jet& o) {
+    widen(o.c_.size());
+    for (std::size_t s = 0; s < o.c_.size(); ++s) c_[s] += o.c_[s];
+    return *this;
+  }
+  jet& operator-=(const jet& o) {
+    widen(o.c_.size());
+    for (std::size_t s = 0; s < o.c_.size(); ++s) c_[s] -= o.c_[s];
+    return *this;
+  }
+  jet& operator*=(const jet& o) {
+    if (o.c_.size() == 1) return scale(o.c_[0]);
+    if (c_.size() == 1) {
+      const T a = c_[0];
+      *this = o;
+      return scale(a);
+    }
+    const std::size_t n = std::max(c_.size(), o.c_.size());
+    std::vector<T> out(n, T(0));
+    const std::size_t na = c_.size(), nb = o.c_.size();
+    for (std::size_t s = 0; s < n; ++s) {
+      T& sum = out[s];
+      for (std::size_t a = s;; a = (a - 1) & s) {  // every subset a of s
+        const std::size_t b = s ^ a;
+        if (a < na && b < nb) sum += c_[a] * o.c_[b];
+        if (a == 0) break;
+      }
+    }
+    c_ = std::move(out);
+    return *this;
+  }
+  jet& operator/=(const jet& o) {
+    if (o.c_.size() == 1) return scale(T(T(1) / o.c_[0]));
+    return *this *= reciprocal(o);
+  }
+  jet& scale(const T& a) {
+    for (T& x : c_) x *= a;
+    return *this;
+  }
+
+  /// 1 / x: the Taylor coefficients (-1)^k / x_0^(k+1).
+  friend jet reciprocal(const jet& x) {
+    const T inv = T(1) / x.value();
+    std::vector<T> c(static_cast<std::size_t>(x.directions()) + 1);
+    c[0] = inv;
+    for (std::size_t k = 1; k < c.size(); ++k) c[k] = T(-c[k - 1] * inv);
+    return taylor(x, c);
+  }
+
+  /// sum_k c[k] n^k with n = x - x_0 (n^(K+1) = 0: terms beyond K are dropped), by Horner.
+  friend jet taylor(const jet& x, const std::vector<T>& c) {
+    const std::size_t terms = std::min(c.size(), static_cast<std::size_t>(x.directions()) + 1);
+    if (terms == 0) return jet(T(0));
+    jet n = x;
+    n.c_[0] = T(0);
+    jet r(c[terms - 1]);
+    for (std::size_t k = terms - 1; k-- > 0;) {
+      r *= n;
+      r.c_[0] += c[k];
+    }
+    return r;
+  }
+
+ private:
+  /// Embeds the jet in `size` coefficients (the added directions with coefficient zero).
+  void widen(std::size_t size) {
+    if (size > c_.size()) c_.resize(size, T(0));
+  }
+  std::vector<T> c_;
+};
+
+template <class X>
+struct is_jet : std::false_type {};
+template <class T>
+struct is_jet<jet<T>> : std::true_type {};
+
+/// The scalars that mix with jet<T>: arithmetic types and T.
+template <class S, class T>
+concept jet_operand = std::is_arithmetic_v<std::remove_cvref_t<S>> || std::is_same_v<std::remove_cvref_t<S>, T>;
+
+template <class T> jet<T> operator+(jet<T> a, const jet<T>& b) { a += b; return a; }
+template <class T> jet<T> operator-(jet<T> a, const jet<T>& b) { a -= b; return a; }
+template <class T> jet<T> operator*(jet<T> a, const jet<T>& b) { a *= b; return a; }
+template <class T> jet<T> operator/(jet<T> a, const jet<T>& b) { a /= b; return a; }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> operator+(jet<T> a, const S& b) { a[0] += T(b); return a; }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> operator+(const S& a, jet<T> b) { b[0] += T(a); return b; }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> operator-(jet<T> a, const S& b) { a[0] -= T(b); return a; }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> operator-(const S& a, jet<T> b) { b.scale(T(-1)); b[0] += T(a); return b; }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> operator*(jet<T> a, const S& b) { a.scale(T(b)); return a; }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> operator*(const S& a, jet<T> b) { b.scale(T(a)); return b; }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> operator/(jet<T> a, const S& b) { a.scale(T(T(1) / T(b))); return a; }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> operator/(const S& a, const jet<T>& b) { return reciprocal(b).scale(T(a)); }
+template <class T> jet<T> operator-(jet<T> a) { a.scale(T(-1)); return a; }
+template <class T> jet<T> operator+(const jet<T>& a) { return a; }
+
+/// Comparisons look at values only (branches inside a potential).
+template <class T> bool operator<(const jet<T>& a, const jet<T>& b) { return a.value() < b.value(); }
+template <class T> bool operator>(const jet<T>& a, const jet<T>& b) { return a.value() > b.value(); }
+template <class T> bool operator<=(const jet<T>& a, const jet<T>& b) { return a.value() <= b.value(); }
+template <class T> bool operator>=(const jet<T>& a, const jet<T>& b) { return a.value() >= b.value(); }
+template <class T> bool operator==(const jet<T>& a, const jet<T>& b) { return a.value() == b.value(); }
+template <class T> bool operator!=(const jet<T>& a, const jet<T>& b) { return !(a.value() == b.value()); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator<(const jet<T>& a, const S& b) { return a.value() < T(b); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator<(const S& a, const jet<T>& b) { return T(a) < b.value(); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator>(const jet<T>& a, const S& b) { return a.value() > T(b); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator>(const S& a, const jet<T>& b) { return T(a) > b.value(); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator<=(const jet<T>& a, const S& b) { return a.value() <= T(b); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator<=(const S& a, const jet<T>& b) { return T(a) <= b.value(); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator>=(const jet<T>& a, const S& b) { return a.value() >= T(b); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator>=(const S& a, const jet<T>& b) { return T(a) >= b.value(); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator==(const jet<T>& a, const S& b) { return a.value() == T(b); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator!=(const jet<T>& a, const S& b) { return !(a.value() == T(b)); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator==(const S& a, const jet<T>& b) { return T(a) == b.value(); }
+template <class T, class S> requires jet_operand<S, T>
+bool operator!=(const S& a, const jet<T>& b) { return !(T(a) == b.value()); }
+
+namespace ad_detail {
+/// The Taylor coefficients of x^a at x_0 != 0 from its value v = x_0^a:
+/// c_k = v binom(a, k) / x_0^k, k = 0..K.
+template <class T>
+std::vector<T> power_coefficients(const T& x0, const T& a, const T& v, int K) {
+  std::vector<T> c(static_cast<std::size_t>(K) + 1);
+  c[0] = v;
+  for (int k = 1; k <= K; ++k) c[static_cast<std::size_t>(k)] = T(c[static_cast<std::size_t>(k - 1)] * (a - T(k - 1)) / (T(k) * x0));
+  return c;
+}
+/// The Taylor coefficients of F at x_0 from F(x_0) and those of F' (length >= K):
+/// c_0 = F(x_0), c_k = F'_{k-1} / k.
+template <class T>
+std::vector<T> integrated(const T& value, const std::vector<T>& derivative, int K) {
+  std::vector<T> c(static_cast<std::size_t>(K) + 1);
+  c[0] = value;
+  for (int k = 1; k <= K; ++k) c[static_cast<std::size_t>(k)] = T(derivative[static_cast<std::size_t>(k - 1)] / T(k));
+  return c;
+}
+/// The first `terms` power-series coefficients of w = v^a with v = v_0 + v_1 s + v_2 s^2, by
+/// the recurrence from v w' = a v' w: k v_0 w_k = sum_{j=1,2} (a j - (k - j)) v_j w_{k-j}.
+template <class T>
+std::vector<T> quadratic_power(const T& v0, const T& v1, const T& v2, const T& a, const T& w0, int terms) {
+  std::vector<T> w(static_cast<std::size_t>(terms > 0 ? terms : 1), T(0));
+  w[0] = w0;
+  for (int k = 1; k < terms; ++k) {
+    T sum = T((a - T(k - 1)) * v1 * w[static_cast<std::size_t>(k - 1)]);
+    if (k >= 2) sum += T((T(2) * a - T(k - 2)) * v2 * w[static_cast<std::size_t>(k - 2)]);
+    w[static_cast<std::size_t>(k)] = T(sum / (T(k) * v0));
+  }
+  return w;
+}
+/// (1/k!) times the cycle value, sign(k) * (k even ? even : odd), of sin, cos, sinh, cosh.
+template <class T>
+std::vector<T> cyclic_coefficients(const T& even, const T& odd, bool alternating, int K) {
+  std::vector<T> c(static_cast<std::size_t>(K) + 1);
+  T inverse_factorial(1);
+  for (int k = 0; k <= K; ++k) {
+    if (k > 0) inverse_factorial /= T(k);
+    const bool negative = alternating && (k % 4 == 2 || k % 4 == 3);
+    const T& base = k % 2 == 0 ? even : odd;
+    c[static_cast<std::size_t>(k)] = negative ? T(-base * inverse_factorial) : T(base * inverse_factorial);
+  }
+  return c;
+}
+}  // namespace ad_detail
+
+/// (sin x, cos x): sin^(k) cycles through sin, cos, -sin, -cos; cos^(k) through cos, -sin, -cos, sin.
+template <class T>
+std::pair<jet<T>, jet<T>> sin_cos(const jet<T>& x) {
+  const std::pair<T, T> sc = sin_cos(x.value());
+  const int K = x.directions();
+  return {taylor(x, ad_detail::cyclic_coefficients(sc.first, sc.second, true, K)),
+          taylor(x, ad_detail::cyclic_coefficients(sc.second, T(-sc.first), true, K))};
+}
+template <class T> jet<T> sin(const jet<T>& x) {
+  const std::pair<T, T> sc = sin_cos(x.value());
+  return taylor(x, ad_detail::cyclic_coefficients(sc.first, sc.second, true, x.directions()));
+}
+template <class T> jet<T> cos(const jet<T>& x) {
+  const std::pair<T, T> sc = sin_cos(x.value());
+  return taylor(x, ad_detail::cyclic_coefficients(sc.second, T(-sc.first), true, x.directions()));
+}
+/// sine and cosine of core/elementary.hpp (the systems' fast forms) on a jet: sin and cos.
+template <class T> jet<T> sine(const jet<T>& x) { return sin(x); }
+template <class T> jet<T> cosine(const jet<T>& x) { return cos(x); }
+template <class T> jet<T> tan(const jet<T>& x) {
+  const auto sc = sin_cos(x);
+  return sc.first / sc.second;
+}
+template <class T> jet<T> exp(const jet<T>& x) {
+  using std::exp;
+  const T e = exp(x.value());
+  return taylor(x, ad_detail::cyclic_coefficients(e, e, false, x.directions()));
+}
+/// expm1: the value by the scalar's expm1, the derivatives exp(x_0).
+template <class T> jet<T> expm1(const jet<T>& x) {
+  using std::exp;
+  using std::expm1;
+  const T e = exp(x.value());
+  std::vector<T> c = ad_detail::cyclic_coefficients(e, e, false, x.directions());
+  c[0] = expm1(x.value());
+  return taylor(x, c);
+}
+/// sinh^(k) alternates sinh, cosh.
+template <class T> jet<T> sinh(const jet<T>& x) {
+  using std::cosh;
+  using std::sinh;
+  return taylor(x, ad_detail::cyclic_coefficients(T(sinh(x.value())), T(cosh(x.value())), false, x.directions()));
+}
+template <class T> jet<T> cosh(const jet<T>& x) {
+  using std::cosh;
+  using std::sinh;
+  return taylor(x, ad_detail::cyclic_coefficients(T(cosh(x.value())), T(sinh(x.value())), false, x.directions()));
+}
+template <class T> jet<T> tanh(const jet<T>& x) { return sinh(x) / cosh(x); }
+/// log: c_k = (-1)^(k+1) / (k x_0^k) (x_0 > 0).
+template <class T> jet<T> log(const jet<T>& x) {
+  using std::log;
+  const int K = x.directions();
+  std::vector<T> c(static_cast<std::size_t>(K) + 1);
+  c[0] = log(x.value());
+  T power(1);
+  for (int k = 1; k <= K; ++k) {
+    power = T(-power / x.value());
+    c[static_cast<std::size_t>(k)] = T(-power / T(k));
+  }
+  return taylor(x, c);
+}
+/// log1p(x) = log(1 + x), the value by the scalar's log1p.
+template <class T> jet<T> log1p(const jet<T>& x) {
+  using std::log1p;
+  jet<T> r = log(jet<T>(x + 1));
+  r[0] = log1p(x.value());
+  return r;
+}
+template <class T> jet<T> sqrt(const jet<T>& x) {
+  using std::sqrt;
+  return taylor(x, ad_detail::power_coefficients(x.value(), T(T(1) / T(2)), T(sqrt(x.value())), x.directions()));
+}
+/// 1 / sqrt(x), the value by core/elementary.hpp's inverse_sqrt (fast in multiprecision).
+template <class T> jet<T> inverse_sqrt(const jet<T>& x) {
+  return taylor(x, ad_detail::power_coefficients(x.value(), T(T(-1) / T(2)), inverse_sqrt(x.value()), x.directions()));
+}
+/// cbrt (x_0 != 0; also for x_0 < 0, where cbrt' = cbrt / (3 x) holds too).
+template <class T> jet<T> cbrt(const jet<T>& x) {
+  using std::cbrt;
+  return taylor(x, ad_detail::power_coefficients(x.value(), T(T(1) / T(3)), T(cbrt(x.value())), x.directions()));
+}
+/// x^k for an integer exponent, by repeated multiplication (exact).
+template <class T> jet<T> pow(const jet<T>& x, int k) {
+  jet<T> r(1), base = x;
+  unsigned e = k < 0 ? 0u - static_cast<unsigned>(k) : static_cast<unsigned>(k);  // |k|, also for INT_MIN
+  while (e) {
+    if (e & 1u) r *= base;
+    e >>= 1u;
+    if (e) base *= base;
+  }
+  return k < 0 ? reciprocal(r) : r;
+}
+/// x^a for a constant exponent a (x_0 > 0).
+template <class T, class S> requires(jet_operand<S, T> && !std::is_integral_v<S>)
+jet<T> pow(const jet<T>& x, const S& a) {
+  using std::pow;
+  const T ta(a);
+  return taylor(x, ad_detail::power_coefficients(x.value(), ta, T(pow(x.value(), ta)), x.directions()));
+}
+/// a^y = exp(y log a) for a constant base a > 0.
+template <class T, class S> requires jet_operand<S, T>
+jet<T> pow(const S& a, const jet<T>& y) {
+  using std::log;
+  return exp(jet<T>(y * T(log(T(a)))));
+}
+/// x^y = exp(y log x) (x_0 > 0).
+template <class T> jet<T> pow(const jet<T>& x, const jet<T>& y) { return exp(jet<T>(y * log(x))); }
+/// atan: atan' = 1 / (1 + x^2) = (v_0 + v_1 s + s^2)^(-1) at x = x_0 + s.
+template <class T> jet<T> atan(const jet<T>& x) {
+  using std::atan;
+  const int K = x.directions();
+  const T& x0 = x.value();
+  const T v0 = T(1) + x0 * x0;
+  const auto w = ad_detail::quadratic_power(v0, T(T(2) * x0), T(1), T(-1), T(T(1) / v0), K);
+  return taylor(x, ad_detail::integrated(T(atan(x0)), w, K));
+}
+/// asin' = (1 - x^2)^(-1/2) (|x_0| < 1).
+template <class T> jet<T> asin(const jet<T>& x) {
+  using std::asin;
+  using std::sqrt;
+  const int K = x.directions();
+  const T& x0 = x.value();
+  const T v0 = T(1) - x0 * x0;
+  const auto w = ad_detail::quadratic_power(v0, T(T(-2) * x0), T(-1), T(T(-1) / T(2)), T(T(1) / sqrt(v0)), K);
+  return taylor(x, ad_detail::integrated(T(asin(x0)), w, K));
+}
+/// acos = pi/2 - asin, the value by the scalar's acos.
+template <class T> jet<T> acos(const jet<T>& x) {
+  using std::acos;
+  jet<T> r = -asin(x);
+  r[0] = acos(x.value());
+  return r;
+}
+/// atan2(y, x) = atan2(y_0, x_0) + atan(z), z = (x_0 y - y_0 x) / (x_0 x + y_0 y): the angle
+/// from (x_0, y_0) to (x, y); z has value zero (not both x_0, y_0 zero).
+template <class T> jet<T> atan2(const jet<T>& y, const jet<T>& x) {
+  using std::atan2;
+  const T& x0 = x.value();
+  const T& y0 = y.value();
+  jet<T> z = (x0 * y - y0 * x) / (x0 * x + y0 * y);
+  z[0] = T(0);
+  jet<T> r = atan(z);
+  r[0] = atan2(y0, x0);
+  return r;
+}
+template <class T, class S> requires jet_operand<S, T>
+jet<T> atan2(const jet<T>& y, const S& x) { return atan2(y, jet<T>(T(x))); }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> atan2(const S& y, const jet<T>& x) { return atan2(jet<T>(T(y)), x); }
+/// hypot(x, y) = sqrt(x^2 + y^2), the value by the scalar's hypot (not both zero).
+template <class T> jet<T> hypot(const jet<T>& x, const jet<T>& y) {
+  using std::hypot;
+  const jet<T> r2 = x * x + y * y;
+  return taylor(r2, ad_detail::power_coefficients(r2.value(), T(T(1) / T(2)), T(hypot(x.value(), y.value())), r2.directions()));
+}
+template <class T, class S> requires jet_operand<S, T>
+jet<T> hypot(const jet<T>& x, const S& y) { return hypot(x, jet<T>(T(y))); }
+template <class T, class S> requires jet_operand<S, T>
+jet<T> hypot(const S& x, const jet<T>& y) { return hypot(jet<T>(T(x)), y); }
+/// |x| (the derivatives of x kept at x_0 = 0).
+template <class T> jet<T> abs(const jet<T>& x) { return x.value() < T(0) ? -x : x; }
+template <class T> jet<T> fabs(const jet<T>& x) { return abs(x); }
+
+}  // namespace geomint
+
+/// Eigen needs NumTraits to store jets in fixed-size matrices.
+namespace Eigen {
+template <class T>
+struct NumTraits<geomint::jet<T>> : NumTraits<T> {
+  using Real = geomint::jet<T>;
+  using NonInteger = Real;
+  using Nested = Real;
+  using Literal = Real;
+  enum { IsComplex = 0, IsInteger = 0, IsSigned = 1, RequireInitialization = 1,
+         ReadCost = HugeCost, AddCost = HugeCost, MulCost = HugeCost };
+};
+}  // namespace Eigen
