@@ -7,8 +7,8 @@
 ///   E = m qdot^2 / 2 + V, grad E = (q v^2 + q^3, (1 + q^2) v).
 /// - The charged particle (systems::charged, L = |qdot|^2/2 + A . qdot with B_z = 1 + r^2): the
 ///   Lorentz force qddot = B (ydot, -xdot), E = |qdot|^2 / 2.
-/// The field's first derivative goes through one more dual level (the use the elementary
-/// differentials make of it).
+/// The field's first derivative goes through the jet scalar of elementary_differentials.hpp (the
+/// duals of L's derivatives nest over it).
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <limits>
@@ -61,8 +61,8 @@ TEMPLATE_TEST_CASE("lagrangian field: a position-dependent mass", "[bseries]", d
   check_close(g[1], T(m * v));
   // f'(y)[u] with u = (1, 0) and (0, 1): the columns of the Jacobian.
   const vec<T, 2> eq(T(1), T(0)), ev(T(0), T(1));
-  const vec<T, 2> dq = detail::directional_derivative<1>(field, y, {&eq});
-  const vec<T, 2> dv = detail::directional_derivative<1>(field, y, {&ev});
+  const vec<T, 2> dq = directional_derivative(field, y, {&eq});
+  const vec<T, 2> dv = directional_derivative(field, y, {&ev});
   check_close(dq[0], T(0));
   check_close(dv[0], T(1));
   check_close(dq[1], T(-((v * v + T(3) * q * q) * m - T(2) * q * (q * v * v + q * q * q)) / (m * m)));
