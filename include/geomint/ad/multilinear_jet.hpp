@@ -20,9 +20,11 @@
 ///
 /// Jets of different K mix: one of fewer directions is one of more that does not depend on the
 /// others (its coefficients are those of the subsets of its own directions); a constant (T or an
-/// arithmetic value) is a jet of K = 0. Storage is on the heap (std::vector).
+/// arithmetic value) is a jet of K = 0. Storage: the coefficients of small K inline (no
+/// allocation: most jets of a field evaluation are short-lived temporaries), more on the heap.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -38,11 +40,76 @@
 
 namespace geomint {
 
+namespace ad::detail {
+/// n values of T: inline up to N, on the heap beyond. Grows only.
+template <class T, std::size_t N>
+class small_buffer {
+ public:
+  small_buffer(std::size_t n, const T& value) { assign(n, value); }
+  /// Copies and moves touch the used values only.
+  small_buffer(const small_buffer& o) : size_(o.size_), large_(o.large_) { copy_small(o); }
+  small_buffer(small_buffer&& o) noexcept : size_(o.size_), large_(std::move(o.large_)) { copy_small(o); }
+  small_buffer& operator=(const small_buffer& o) {
+    if (this != &o) {
+      size_ = o.size_;
+      large_ = o.large_;
+      copy_small(o);
+    }
+    return *this;
+  }
+  small_buffer& operator=(small_buffer&& o) noexcept {
+    if (this != &o) {
+      size_ = o.size_;
+      large_ = std::move(o.large_);
+      copy_small(o);
+    }
+    return *this;
+  }
+  ~small_buffer() = default;
+  std::size_t size() const { return size_; }
+  T& operator[](std::size_t i) { return size_ <= N ? small_[i] : large_[i]; }
+  const T& operator[](std::size_t i) const { return size_ <= N ? small_[i] : large_[i]; }
+  void assign(std::size_t n, const T& value) {
+    if (n <= N) {
+      for (std::size_t i = 0; i < n; ++i) small_[i] = value;
+      large_.clear();
+    } else {
+      large_.assign(n, value);
+    }
+    size_ = n;
+  }
+  /// Grows to n values, the new ones zero.
+  void widen(std::size_t n) {
+    if (n <= size_) return;
+    if (n <= N) {
+      for (std::size_t i = size_; i < n; ++i) small_[i] = T(0);
+    } else {
+      if (size_ <= N) large_.assign(small_.begin(), small_.begin() + static_cast<std::ptrdiff_t>(size_));
+      large_.resize(n, T(0));
+    }
+    size_ = n;
+  }
+
+ private:
+  void copy_small(const small_buffer& o) {
+    if (size_ <= N)
+      for (std::size_t i = 0; i < size_; ++i) small_[i] = o.small_[i];
+  }
+  std::size_t size_ = 0;
+  std::array<T, N> small_;  // (values beyond size_ are never read)
+  std::vector<T> large_;
+};
+}  // namespace ad::detail
+
 template <class T>
 class jet {
  public:
   /// The largest number of directions (2^K coefficients; 2^20 is already 8 MB in double).
   static constexpr int max_directions = 20;
+
+  /// The coefficients stored inline: K <= 4 for built-in types, K <= 2 for wider ones (whose
+  /// coefficients are large and whose arithmetic costs more than an allocation).
+  static constexpr std::size_t inline_coefficients = sizeof(T) <= sizeof(long double) ? 16 : 4;
 
   jet() : c_(1, T(0)) {}
   /// A constant. Implicit, so constants mix freely with jets.
@@ -85,12 +152,12 @@ class jet {
   const T& operator[](std::size_t subset) const { return c_[subset]; }
 
   jet& operator+=(const jet& o) {
-    widen(o.c_.size());
+    c_.widen(o.c_.size());  // (a jet of fewer directions embeds in one of more)
     for (std::size_t s = 0; s < o.c_.size(); ++s) c_[s] += o.c_[s];
     return *this;
   }
   jet& operator-=(const jet& o) {
-    widen(o.c_.size());
+    c_.widen(o.c_.size());  // (a jet of fewer directions embeds in one of more)
     for (std::size_t s = 0; s < o.c_.size(); ++s) c_[s] -= o.c_[s];
     return *this;
   }
@@ -102,7 +169,7 @@ class jet {
       return scale(a);
     }
     const std::size_t n = std::max(c_.size(), o.c_.size());
-    std::vector<T> out(n, T(0));
+    coefficients out(n, T(0));
     const std::size_t na = c_.size(), nb = o.c_.size();
     for (std::size_t s = 0; s < n; ++s) {
       T& sum = out[s];
@@ -120,7 +187,7 @@ class jet {
     return *this *= reciprocal(o);
   }
   jet& scale(const T& a) {
-    for (T& x : c_) x *= a;
+    for (std::size_t s = 0; s < c_.size(); ++s) c_[s] *= a;
     return *this;
   }
 
@@ -148,17 +215,9 @@ class jet {
   }
 
  private:
-  /// Embeds the jet in `size` coefficients (the added directions with coefficient zero).
-  void widen(std::size_t size) {
-    if (size > c_.size()) c_.resize(size, T(0));
-  }
-  std::vector<T> c_;
+  using coefficients = ad::detail::small_buffer<T, inline_coefficients>;
+  coefficients c_;
 };
-
-template <class X>
-struct is_jet : std::false_type {};
-template <class T>
-struct is_jet<jet<T>> : std::true_type {};
 
 /// The scalars that mix with jet<T>: arithmetic types and T.
 template <class S, class T>
@@ -219,7 +278,7 @@ bool operator==(const S& a, const jet<T>& b) { return T(a) == b.value(); }
 template <class T, class S> requires jet_operand<S, T>
 bool operator!=(const S& a, const jet<T>& b) { return !(T(a) == b.value()); }
 
-namespace ad_detail {
+namespace ad::detail {
 /// The Taylor coefficients of x^a at x_0 != 0 from its value v = x_0^a:
 /// c_k = v binom(a, k) / x_0^k, k = 0..K.
 template <class T>
@@ -264,23 +323,23 @@ std::vector<T> cyclic_coefficients(const T& even, const T& odd, bool alternating
   }
   return c;
 }
-}  // namespace ad_detail
+}  // namespace ad::detail
 
 /// (sin x, cos x): sin^(k) cycles through sin, cos, -sin, -cos; cos^(k) through cos, -sin, -cos, sin.
 template <class T>
 std::pair<jet<T>, jet<T>> sin_cos(const jet<T>& x) {
   const std::pair<T, T> sc = sin_cos(x.value());
   const int K = x.directions();
-  return {taylor(x, ad_detail::cyclic_coefficients(sc.first, sc.second, true, K)),
-          taylor(x, ad_detail::cyclic_coefficients(sc.second, T(-sc.first), true, K))};
+  return {taylor(x, ad::detail::cyclic_coefficients(sc.first, sc.second, true, K)),
+          taylor(x, ad::detail::cyclic_coefficients(sc.second, T(-sc.first), true, K))};
 }
 template <class T> jet<T> sin(const jet<T>& x) {
   const std::pair<T, T> sc = sin_cos(x.value());
-  return taylor(x, ad_detail::cyclic_coefficients(sc.first, sc.second, true, x.directions()));
+  return taylor(x, ad::detail::cyclic_coefficients(sc.first, sc.second, true, x.directions()));
 }
 template <class T> jet<T> cos(const jet<T>& x) {
   const std::pair<T, T> sc = sin_cos(x.value());
-  return taylor(x, ad_detail::cyclic_coefficients(sc.second, T(-sc.first), true, x.directions()));
+  return taylor(x, ad::detail::cyclic_coefficients(sc.second, T(-sc.first), true, x.directions()));
 }
 /// sine and cosine of core/elementary.hpp (the systems' fast forms) on a jet: sin and cos.
 template <class T> jet<T> sine(const jet<T>& x) { return sin(x); }
@@ -292,14 +351,14 @@ template <class T> jet<T> tan(const jet<T>& x) {
 template <class T> jet<T> exp(const jet<T>& x) {
   using std::exp;
   const T e = exp(x.value());
-  return taylor(x, ad_detail::cyclic_coefficients(e, e, false, x.directions()));
+  return taylor(x, ad::detail::cyclic_coefficients(e, e, false, x.directions()));
 }
 /// expm1: the value by the scalar's expm1, the derivatives exp(x_0).
 template <class T> jet<T> expm1(const jet<T>& x) {
   using std::exp;
   using std::expm1;
   const T e = exp(x.value());
-  std::vector<T> c = ad_detail::cyclic_coefficients(e, e, false, x.directions());
+  std::vector<T> c = ad::detail::cyclic_coefficients(e, e, false, x.directions());
   c[0] = expm1(x.value());
   return taylor(x, c);
 }
@@ -307,12 +366,12 @@ template <class T> jet<T> expm1(const jet<T>& x) {
 template <class T> jet<T> sinh(const jet<T>& x) {
   using std::cosh;
   using std::sinh;
-  return taylor(x, ad_detail::cyclic_coefficients(T(sinh(x.value())), T(cosh(x.value())), false, x.directions()));
+  return taylor(x, ad::detail::cyclic_coefficients(T(sinh(x.value())), T(cosh(x.value())), false, x.directions()));
 }
 template <class T> jet<T> cosh(const jet<T>& x) {
   using std::cosh;
   using std::sinh;
-  return taylor(x, ad_detail::cyclic_coefficients(T(cosh(x.value())), T(sinh(x.value())), false, x.directions()));
+  return taylor(x, ad::detail::cyclic_coefficients(T(cosh(x.value())), T(sinh(x.value())), false, x.directions()));
 }
 template <class T> jet<T> tanh(const jet<T>& x) { return sinh(x) / cosh(x); }
 /// log: c_k = (-1)^(k+1) / (k x_0^k) (x_0 > 0).
@@ -337,16 +396,16 @@ template <class T> jet<T> log1p(const jet<T>& x) {
 }
 template <class T> jet<T> sqrt(const jet<T>& x) {
   using std::sqrt;
-  return taylor(x, ad_detail::power_coefficients(x.value(), T(T(1) / T(2)), T(sqrt(x.value())), x.directions()));
+  return taylor(x, ad::detail::power_coefficients(x.value(), T(T(1) / T(2)), T(sqrt(x.value())), x.directions()));
 }
 /// 1 / sqrt(x), the value by core/elementary.hpp's inverse_sqrt (fast in multiprecision).
 template <class T> jet<T> inverse_sqrt(const jet<T>& x) {
-  return taylor(x, ad_detail::power_coefficients(x.value(), T(T(-1) / T(2)), inverse_sqrt(x.value()), x.directions()));
+  return taylor(x, ad::detail::power_coefficients(x.value(), T(T(-1) / T(2)), inverse_sqrt(x.value()), x.directions()));
 }
 /// cbrt (x_0 != 0; also for x_0 < 0, where cbrt' = cbrt / (3 x) holds too).
 template <class T> jet<T> cbrt(const jet<T>& x) {
   using std::cbrt;
-  return taylor(x, ad_detail::power_coefficients(x.value(), T(T(1) / T(3)), T(cbrt(x.value())), x.directions()));
+  return taylor(x, ad::detail::power_coefficients(x.value(), T(T(1) / T(3)), T(cbrt(x.value())), x.directions()));
 }
 /// x^k for an integer exponent, by repeated multiplication (exact).
 template <class T> jet<T> pow(const jet<T>& x, int k) {
@@ -364,7 +423,7 @@ template <class T, class S> requires(jet_operand<S, T> && !std::is_integral_v<S>
 jet<T> pow(const jet<T>& x, const S& a) {
   using std::pow;
   const T ta(a);
-  return taylor(x, ad_detail::power_coefficients(x.value(), ta, T(pow(x.value(), ta)), x.directions()));
+  return taylor(x, ad::detail::power_coefficients(x.value(), ta, T(pow(x.value(), ta)), x.directions()));
 }
 /// a^y = exp(y log a) for a constant base a > 0.
 template <class T, class S> requires jet_operand<S, T>
@@ -380,8 +439,8 @@ template <class T> jet<T> atan(const jet<T>& x) {
   const int K = x.directions();
   const T& x0 = x.value();
   const T v0 = T(1) + x0 * x0;
-  const auto w = ad_detail::quadratic_power(v0, T(T(2) * x0), T(1), T(-1), T(T(1) / v0), K);
-  return taylor(x, ad_detail::integrated(T(atan(x0)), w, K));
+  const auto w = ad::detail::quadratic_power(v0, T(T(2) * x0), T(1), T(-1), T(T(1) / v0), K);
+  return taylor(x, ad::detail::integrated(T(atan(x0)), w, K));
 }
 /// asin' = (1 - x^2)^(-1/2) (|x_0| < 1).
 template <class T> jet<T> asin(const jet<T>& x) {
@@ -390,8 +449,8 @@ template <class T> jet<T> asin(const jet<T>& x) {
   const int K = x.directions();
   const T& x0 = x.value();
   const T v0 = T(1) - x0 * x0;
-  const auto w = ad_detail::quadratic_power(v0, T(T(-2) * x0), T(-1), T(T(-1) / T(2)), T(T(1) / sqrt(v0)), K);
-  return taylor(x, ad_detail::integrated(T(asin(x0)), w, K));
+  const auto w = ad::detail::quadratic_power(v0, T(T(-2) * x0), T(-1), T(T(-1) / T(2)), T(T(1) / sqrt(v0)), K);
+  return taylor(x, ad::detail::integrated(T(asin(x0)), w, K));
 }
 /// acos = pi/2 - asin, the value by the scalar's acos.
 template <class T> jet<T> acos(const jet<T>& x) {
@@ -420,7 +479,7 @@ jet<T> atan2(const S& y, const jet<T>& x) { return atan2(jet<T>(T(y)), x); }
 template <class T> jet<T> hypot(const jet<T>& x, const jet<T>& y) {
   using std::hypot;
   const jet<T> r2 = x * x + y * y;
-  return taylor(r2, ad_detail::power_coefficients(r2.value(), T(T(1) / T(2)), T(hypot(x.value(), y.value())), r2.directions()));
+  return taylor(r2, ad::detail::power_coefficients(r2.value(), T(T(1) / T(2)), T(hypot(x.value(), y.value())), r2.directions()));
 }
 template <class T, class S> requires jet_operand<S, T>
 jet<T> hypot(const jet<T>& x, const S& y) { return hypot(x, jet<T>(T(y))); }

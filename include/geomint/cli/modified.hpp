@@ -56,9 +56,8 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                also the modified Hamiltonian's terms h^(|t|-1) c H(t) per free tree (rk: every\n"
     "                H; scheme, rkn, nystrom: H = |p|^2/2 + V(q); prk: H = T(p) + V(q)).\n"
     "                Trees: q/p (two colours) or y (one colour) with the children in brackets.\n"
-    "With --system S (a system of at most 2 degrees of freedom; the compile time and stack\n"
-    "size of the nested duals bound the dimension) it runs the\n"
-    "method (the scheme's stepper or the tableau's) N steps at each tau and predicts its energy\n"
+    "With --system S (any number of degrees of freedom) it runs the method (the\n"
+    "scheme's stepper or the tableau's) N steps at each tau and predicts its energy\n"
     "error from the modified field, evaluated along the numerical solution with the system's\n"
     "derivatives by automatic differentiation:\n"
     "  symplectic:   H(y_n) - H(y_0) = -sum_{j=1..K} h^(p+j-1) (H_{p+j}(y_n) - H_{p+j}(y_0)), the\n"
@@ -385,65 +384,61 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
 template <class T, class List>
 int run(List list, const options& o, const method_series& natural_series) {
   return with_system(list, o.system, [&]<class Sys>() -> int {
-    if constexpr (Sys::dof > 2) {
-      throw cli::usage_error("--system " + o.system + ": the prediction needs a system of at most 2 degrees of freedom");
-    } else {
-      const method_series m = natural_system<Sys> ? natural_series : lagrangian_series_of(o, natural_series, o.system);
-      if (!o.scheme.empty()) {
-        try {
-          check_scheme<T>(list, o.system, spec_of(o));
-        } catch (const std::invalid_argument& e) {
-          throw cli::usage_error(e.what());
-        }
+    const method_series m = natural_system<Sys> ? natural_series : lagrangian_series_of(o, natural_series, o.system);
+    if (!o.scheme.empty()) {
+      try {
+        check_scheme<T>(list, o.system, spec_of(o));
+      } catch (const std::invalid_argument& e) {
+        throw cli::usage_error(e.what());
       }
-      for (const auto& [flag, values] : {std::pair{"--q0", &o.q0}, std::pair{"--p0", &o.p0}}) {
-        if (!values->empty() && values->size() != static_cast<std::size_t>(Sys::dof))
-          throw cli::usage_error(std::string(flag) + " needs " + std::to_string(Sys::dof) + " value(s) for --system " + o.system);
-        for (const std::string& s : *values) parse_number<T>(flag, s);
-      }
-      int status = 0;
-      const char* header = m.symplectic || m.accumulated ? "tau,steps,predicted_max_energy_error,measured_max_energy_error"
-                                        : "tau,steps,predicted_drift_rate,measured_drift_rate";
-      if (o.csv) std::cout << header << '\n';
-      else
-        std::cout << m.label << " on " << o.system << " (order " << m.order << ", "
-                  << (m.symplectic ? "symplectic: max |H - H0|"
-                                   : m.accumulated ? "Nystrom form in (q, v): max |E - E0|" : "not symplectic: dH/dt")
-                  << ", " << o.terms
-                  << " term(s), " << o.digits << " digits)\n"
-                  << std::setw(12) << "tau" << std::setw(10) << "steps" << std::setw(16) << "predicted" << std::setw(16)
-                  << "measured" << std::setw(12) << "ratio" << '\n';
-      // The steps of every tau, counted by the progress line; the messages of the runs are held
-      // until it is erased.
-      progress bar(o.program, o.tau.size() * static_cast<std::size_t>(o.steps), "steps");
-      std::ostringstream messages;
-      std::size_t done = 0;
-      for (const std::string& text : o.tau) {
-        const T tau = parse_number<T>("--tau", text);
-        const row<T> r = run_case<Sys, T>(list, o, m, tau, bar, done);
-        done += static_cast<std::size_t>(o.steps);
-        if (!r.failure.empty()) {
-          messages << o.program << ": tau = " << text << ": " << r.failure << '\n';
-          status = cli::exit_run_failure;
-        }
-        // A failed run is no measurement: its row says nan.
-        const bool ok = r.failure.empty();
-        const std::string predicted = ok ? sci(r.predicted) : "nan", measured = ok ? sci(r.measured) : "nan";
-        if (o.csv) {
-          std::cout << text << ',' << o.steps << ',' << predicted << ',' << measured << '\n';
-        } else {
-          std::ostringstream ratio;
-          ratio << std::fixed << std::setprecision(6) << static_cast<double>(r.predicted / r.measured);
-          std::cout << std::setw(12) << text << std::setw(10) << o.steps << std::setw(16) << predicted << std::setw(16) << measured
-                    << std::setw(12) << (ok ? ratio.str() : "nan") << '\n';
-        }
-        if (m.symplectic)
-          messages << o.program << ": tau = " << text << ": quadrature error estimate " << sci(r.quadrature) << '\n';
-      }
-      bar.finish();
-      std::cerr << messages.str();
-      return status;
     }
+    for (const auto& [flag, values] : {std::pair{"--q0", &o.q0}, std::pair{"--p0", &o.p0}}) {
+      if (!values->empty() && values->size() != static_cast<std::size_t>(Sys::dof))
+        throw cli::usage_error(std::string(flag) + " needs " + std::to_string(Sys::dof) + " value(s) for --system " + o.system);
+      for (const std::string& s : *values) parse_number<T>(flag, s);
+    }
+    int status = 0;
+    const char* header = m.symplectic || m.accumulated ? "tau,steps,predicted_max_energy_error,measured_max_energy_error"
+                                                       : "tau,steps,predicted_drift_rate,measured_drift_rate";
+    if (o.csv) std::cout << header << '\n';
+    else
+      std::cout << m.label << " on " << o.system << " (order " << m.order << ", "
+                << (m.symplectic ? "symplectic: max |H - H0|"
+                                 : m.accumulated ? "Nystrom form in (q, v): max |E - E0|" : "not symplectic: dH/dt")
+                << ", " << o.terms
+                << " term(s), " << o.digits << " digits)\n"
+                << std::setw(12) << "tau" << std::setw(10) << "steps" << std::setw(16) << "predicted" << std::setw(16)
+                << "measured" << std::setw(12) << "ratio" << '\n';
+    // The steps of every tau, counted by the progress line; the messages of the runs are held
+    // until it is erased.
+    progress bar(o.program, o.tau.size() * static_cast<std::size_t>(o.steps), "steps");
+    std::ostringstream messages;
+    std::size_t done = 0;
+    for (const std::string& text : o.tau) {
+      const T tau = parse_number<T>("--tau", text);
+      const row<T> r = run_case<Sys, T>(list, o, m, tau, bar, done);
+      done += static_cast<std::size_t>(o.steps);
+      if (!r.failure.empty()) {
+        messages << o.program << ": tau = " << text << ": " << r.failure << '\n';
+        status = cli::exit_run_failure;
+      }
+      // A failed run is no measurement: its row says nan.
+      const bool ok = r.failure.empty();
+      const std::string predicted = ok ? sci(r.predicted) : "nan", measured = ok ? sci(r.measured) : "nan";
+      if (o.csv) {
+        std::cout << text << ',' << o.steps << ',' << predicted << ',' << measured << '\n';
+      } else {
+        std::ostringstream ratio;
+        ratio << std::fixed << std::setprecision(6) << static_cast<double>(r.predicted / r.measured);
+        std::cout << std::setw(12) << text << std::setw(10) << o.steps << std::setw(16) << predicted << std::setw(16) << measured
+                  << std::setw(12) << (ok ? ratio.str() : "nan") << '\n';
+      }
+      if (m.symplectic)
+        messages << o.program << ": tau = " << text << ": quadrature error estimate " << sci(r.quadrature) << '\n';
+    }
+    bar.finish();
+    std::cerr << messages.str();
+    return status;
   });
 }
 
