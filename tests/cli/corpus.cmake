@@ -254,7 +254,7 @@ geomint_cli_corpus(geomint-modified "--scheme midpoint on --system charged .a La
                    --scheme midpoint --system charged --tau 0.1 --steps 10)
 geomint_cli_corpus(geomint-modified "--scheme galerkin on --system spring-pendulum .a Lagrangian that is not natural.: no prediction"
                    --scheme galerkin --m 2 --system spring-pendulum --tau 0.1 --steps 10)
-geomint_cli_corpus(geomint-modified "--tableau: an rkn tableau runs on natural systems only on --system charged"
+geomint_cli_corpus(geomint-modified "--tableau: rkn tableaux run on natural systems only, not on --system charged"
                    --tableau ${PROJECT_SOURCE_DIR}/examples/tableaux/stormer_verlet.tableau --system charged --tau 0.1 --steps 10)
 geomint_cli_corpus(geomint-modified "--q0 needs 1 value" --scheme midpoint --system pendulum --q0 1,2 --tau 0.1 --steps 10)
 geomint_cli_corpus(geomint-modified "--digits must be one of 16, 50, 100" --digits 15)

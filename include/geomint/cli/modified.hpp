@@ -208,7 +208,7 @@ inline method_series lagrangian_series_of(const options& o, method_series m, con
   if (!o.tableau.empty()) {
     const methods::method_kind kind = methods::read_tableau_file(o.tableau).kind;
     if (kind == methods::method_kind::rkn || kind == methods::method_kind::prk)
-      throw cli::usage_error("--tableau: an " + std::string(methods::to_string(kind)) + " tableau runs on natural systems only" +
+      throw cli::usage_error("--tableau: " + std::string(methods::to_string(kind)) + " tableaux run on natural systems only, not" +
                              here + "; rk and nystrom tableaux run on any Lagrangian");
   } else {
     std::vector<field_element> a;
