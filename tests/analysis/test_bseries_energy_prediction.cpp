@@ -10,6 +10,7 @@
 ///
 /// Case: the pendulum from q = 1 at rest (H = 1 - cos 1) over t in [0, 8] (more than one
 /// period, about 6.7).
+#include <boost/multiprecision/cpp_int.hpp>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -99,6 +100,26 @@ TEST_CASE("energy prediction: the order is checked against the modified field", 
   CHECK_THROWS_AS(terms_of(trees, a, 3), std::invalid_argument);  // Stormer-Verlet has order 2
   const tree_set small(2, 2);  // trees too small for order p + 1 = 3
   CHECK_THROWS_AS(terms_of(small, elementary_weights(small, geomint::trapezoidal_tableau()), 2), std::invalid_argument);
+}
+
+TEST_CASE("energy prediction: the cumulative integral of the rate is exact for cubics", "[bseries]") {
+  // r(t) = 1 - 2t + 3t^2 - t^3 has the integral t - t^2 + t^3 - t^4/4 (exact mathematics); the
+  // rule is the cubic through four samples on every step, so it is exact in exact arithmetic.
+  using Q = boost::multiprecision::cpp_rational;
+  const Q h = Q(1) / 3;
+  const auto r = [](const Q& t) { return Q(1 - 2 * t + 3 * t * t - t * t * t); };
+  const auto integral = [](const Q& t) { return Q(t - t * t + t * t * t - t * t * t * t / 4); };
+  for (int N : {1, 2, 3, 4, 7}) {
+    std::vector<Q> samples;
+    for (int k = 0; k <= N; ++k) samples.push_back(N < 3 ? Q(2 - Q(k) * h) : r(Q(k) * h));  // N < 3: a line (trapezoidal rule)
+    const std::vector<Q> I = cumulative_integral(samples, h);
+    REQUIRE(I.size() == samples.size());
+    for (int k = 0; k <= N; ++k) {
+      INFO("N = " << N << ", k = " << k);
+      const Q t = Q(k) * h;
+      CHECK(I[static_cast<std::size_t>(k)] == (N < 3 ? Q(2 * t - t * t / 2) : integral(t)));
+    }
+  }
 }
 
 }  // namespace bseries_energy_prediction_test

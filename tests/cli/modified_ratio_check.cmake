@@ -1,5 +1,6 @@
 cmake_minimum_required(VERSION 3.20)  # if() compares quoted texts as texts (CMP0054)
-# cmake -P: runs COMMAND (geomint-modified ... --system S --tau ... --csv, a symplectic method)
+# cmake -P: runs COMMAND (geomint-modified ... --system S --tau ... --csv, a symplectic method or
+# any on a Lagrangian that is not natural: the same columns)
 # and checks on the row at LAST_TAU that predicted / measured (columns 3 and 4, in the %e form
 # d.dddddde[+-]XX) is within PERCENT percent of 1, in integer arithmetic: the mantissas as
 # integers of 7 digits, the ratio in units of 1/100000.

@@ -17,6 +17,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "geomint/analysis/bseries/energy_prediction.hpp"
+#include "geomint/analysis/bseries/lagrangian_field.hpp"
 #include "geomint/analysis/bseries/method_analysis.hpp"
 #include "geomint/analysis/bseries/modified_equation.hpp"
 #include "geomint/analysis/bseries/modified_hamiltonian.hpp"
@@ -55,7 +56,7 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                also the modified Hamiltonian's terms h^(|t|-1) c H(t) per free tree (rk: every\n"
     "                H; scheme, rkn, nystrom: H = |p|^2/2 + V(q); prk: H = T(p) + V(q)).\n"
     "                Trees: q/p (two colours) or y (one colour) with the children in brackets.\n"
-    "With --system S (a natural system, any number of degrees of freedom) it runs the method (the\n"
+    "With --system S (any number of degrees of freedom) it runs the method (the\n"
     "scheme's stepper or the tableau's) N steps at each tau and predicts its energy\n"
     "error from the modified field, evaluated along the numerical solution with the system's\n"
     "derivatives by automatic differentiation:\n"
@@ -68,6 +69,10 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                sum_j h^(p+j-1) grad H . f_{p+j}(y_n); measured = least-squares slope of\n"
     "                H(y_n) - H(y_0) in t; CSV tau,steps,predicted_drift_rate,measured_drift_rate\n"
     "                (the h^p term can average to zero over a period: RK4 drifts at h^5, --terms 2)\n"
+    "  not natural:  a Lagrangian that is not natural (lpf; rk and nystrom tableaux): the step is a\n"
+    "                Nystrom method in y = (q, v) for q'' = F(q, q') (Legendre maps at both ends), so\n"
+    "                E(y_n) - E(y_0) (E = v . L_v - L = H) is predicted as the integral over [0, t_n]\n"
+    "                of sum_j h^(p+j-1) grad E . f_{p+j}(y); CSV and maxima as for symplectic\n"
     "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); p + K at most 9\n"
     "  --digits D    working precision 16 (default), 50 or 100\n"
     "Initial data as geomint-run (--p0 the momentum); the step monitor is on (--no-monitor turns it\n"
@@ -98,6 +103,9 @@ struct method_series {
   std::string label;
   int order = 0;             ///< p
   bool symplectic = false;
+  /// A Lagrangian that is not natural: the prediction is the accumulated E(y_n) - E(y_0) of the
+  /// method's Nystrom form in (q, v) (lagrangian_series_of).
+  bool accumulated = false;
   std::string symplecticity_basis;
   bool one_colour = false;   ///< an rk tableau (B-series); else P-series
   /// Two colours: the Hamiltonians the modified Hamiltonian is printed for (natural for a
@@ -179,6 +187,38 @@ inline method_series series_of(const options& o) {
     a = elementary_weights(m.trees, partitioned_form_of(t), &m.wanted);
   }
   m.b = modified_field(m.trees, a);
+  return m;
+}
+
+/// The series of the method on a Lagrangian that is not natural, where the step is a Nystrom
+/// method in (q, v) for q'' = F(q, q') composed with the Legendre maps p <-> v at both ends, so
+/// H(q_n, p_n) = E(q_n, v_n) (docs/results/schemes.md, "LPF as a Nystrom method"): lpf by its
+/// collocation Nystrom weights on the Nystrom trees of F(q, q') (rkn_series.hpp); an rk or
+/// nystrom tableau as series_of has it (its stepper runs that Nystrom form in (q, v),
+/// methods/tableau_method.hpp). The others have no such form: usage_error naming why. The
+/// method is not symplectic there in general (docs/results/schemes.md, item 5), so the
+/// prediction is the accumulated energy error.
+inline method_series lagrangian_series_of(const options& o, method_series m, const std::string& system) {
+  const std::string here = " on --system " + system + " (a Lagrangian that is not natural)";
+  if (o.scheme == "midpoint" || o.scheme == "trapezoidal" || o.scheme == "galerkin")
+    throw cli::usage_error("--scheme " + o.scheme + here + ": no prediction: the series of this variational integrator "
+                           "is its exact RKN tableau (analysis/rkn_tableau.hpp), its map on natural systems only; here it "
+                           "steps (q, p) through its discrete Lagrangian, with no Nystrom form in (q, v) (lpf and rk or "
+                           "nystrom tableaux have one)");
+  if (!o.tableau.empty()) {
+    const methods::method_kind kind = methods::read_tableau_file(o.tableau).kind;
+    if (kind == methods::method_kind::rkn || kind == methods::method_kind::prk)
+      throw cli::usage_error("--tableau: " + std::string(methods::to_string(kind)) + " tableaux run on natural systems only, not" +
+                             here + "; rk and nystrom tableaux run on any Lagrangian");
+  } else {
+    std::vector<field_element> a;
+    for (const exact_rational& x : collocation_nystrom_weights(m.trees, exact_tableau_of(o))) a.emplace_back(x);
+    m.wanted = nystrom_trees(m.trees, false);
+    m.b = modified_field(m.trees, a);
+  }
+  m.symplectic = false;
+  m.accumulated = true;
+  m.symplecticity_basis = "Nystrom form in (q, v)";
   return m;
 }
 
@@ -291,7 +331,16 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
   std::vector<T> times, errors;
   for (long k = 0;; ++k) {
     state y;
-    y << q, p;
+    if constexpr (natural_system<Sys>) {
+      y << q, p;
+    } else {  // (q, v): v by the inverse Legendre map
+      vec<T, n> v;
+      if (!lagrangian_derivatives<Sys, T>::velocity(Sys{}, vec<T, n>(q), vec<T, n>(p), v)) {
+        r.failure = "step " + std::to_string(k) + ": the inverse Legendre map p -> v did not converge";
+        return r;
+      }
+      y << q, v;
+    }
     ys.push_back(y);
     times.push_back(T(k) * tau);
     errors.push_back(T(stepper->energy(q, p) - h0));
@@ -305,21 +354,26 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
     q = q1;
     p = p1;
   }
-  const natural_field<Sys, T> field{};
   const modified_terms<T> terms =
       make_modified_terms<T>(m.trees, m.b, m.wanted, m.order, o.terms, methods::coefficient_converter<T>{});
   using std::abs;
-  if (m.symplectic) {
-    const auto prediction = predict_energy_error(terms, field, ys, tau);
+  const auto take_maxima = [&](const std::vector<T>& predicted) {
     for (std::size_t k = 0; k < ys.size(); ++k) {
-      r.predicted = std::max(r.predicted, T(abs(prediction.error[k])));
+      r.predicted = std::max(r.predicted, T(abs(predicted[k])));
       r.measured = std::max(r.measured, T(abs(errors[k])));
     }
+  };
+  if constexpr (!natural_system<Sys>) {
+    const lagrangian_field<Sys> field{};
+    take_maxima(predict_energy_change(terms, field, ys, tau, [&](const state& y) { return field.energy_gradient(y); }));
+  } else if (m.symplectic) {
+    const auto prediction = predict_energy_error(terms, natural_field<Sys, T>{}, ys, tau);
+    take_maxima(prediction.error);
     r.quadrature = prediction.quadrature_estimate;
     if (!(r.quadrature <= r.predicted / 1000))
       r.failure = "the quadrature's error estimate " + sci(r.quadrature) + " is above 1/1000 of the prediction";
   } else {
-    const std::vector<T> rate = predict_energy_rate(terms, field, ys, tau);
+    const std::vector<T> rate = predict_energy_rate(terms, natural_field<Sys, T>{}, ys, tau);
     for (const T& x : rate) r.predicted += x;
     r.predicted /= T(static_cast<long>(rate.size()));
     r.measured = slope(times, errors);
@@ -328,64 +382,63 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
 }
 
 template <class T, class List>
-int run(List list, const options& o, const method_series& m) {
+int run(List list, const options& o, const method_series& natural_series) {
   return with_system(list, o.system, [&]<class Sys>() -> int {
-    if constexpr (!natural_system<Sys>) {
-      throw cli::usage_error("--system " + o.system + ": the prediction needs a natural system");
-    } else {
-      if (!o.scheme.empty()) {
-        try {
-          check_scheme<T>(list, o.system, spec_of(o));
-        } catch (const std::invalid_argument& e) {
-          throw cli::usage_error(e.what());
-        }
+    const method_series m = natural_system<Sys> ? natural_series : lagrangian_series_of(o, natural_series, o.system);
+    if (!o.scheme.empty()) {
+      try {
+        check_scheme<T>(list, o.system, spec_of(o));
+      } catch (const std::invalid_argument& e) {
+        throw cli::usage_error(e.what());
       }
-      for (const auto& [flag, values] : {std::pair{"--q0", &o.q0}, std::pair{"--p0", &o.p0}}) {
-        if (!values->empty() && values->size() != static_cast<std::size_t>(Sys::dof))
-          throw cli::usage_error(std::string(flag) + " needs " + std::to_string(Sys::dof) + " value(s) for --system " + o.system);
-        for (const std::string& s : *values) parse_number<T>(flag, s);
-      }
-      int status = 0;
-      const char* header = m.symplectic ? "tau,steps,predicted_max_energy_error,measured_max_energy_error"
-                                        : "tau,steps,predicted_drift_rate,measured_drift_rate";
-      if (o.csv) std::cout << header << '\n';
-      else
-        std::cout << m.label << " on " << o.system << " (order " << m.order << ", "
-                  << (m.symplectic ? "symplectic: max |H - H0|" : "not symplectic: dH/dt") << ", " << o.terms
-                  << " term(s), " << o.digits << " digits)\n"
-                  << std::setw(12) << "tau" << std::setw(10) << "steps" << std::setw(16) << "predicted" << std::setw(16)
-                  << "measured" << std::setw(12) << "ratio" << '\n';
-      // The steps of every tau, counted by the progress line; the messages of the runs are held
-      // until it is erased.
-      progress bar(o.program, o.tau.size() * static_cast<std::size_t>(o.steps), "steps");
-      std::ostringstream messages;
-      std::size_t done = 0;
-      for (const std::string& text : o.tau) {
-        const T tau = parse_number<T>("--tau", text);
-        const row<T> r = run_case<Sys, T>(list, o, m, tau, bar, done);
-        done += static_cast<std::size_t>(o.steps);
-        if (!r.failure.empty()) {
-          messages << o.program << ": tau = " << text << ": " << r.failure << '\n';
-          status = cli::exit_run_failure;
-        }
-        // A failed run is no measurement: its row says nan.
-        const bool ok = r.failure.empty();
-        const std::string predicted = ok ? sci(r.predicted) : "nan", measured = ok ? sci(r.measured) : "nan";
-        if (o.csv) {
-          std::cout << text << ',' << o.steps << ',' << predicted << ',' << measured << '\n';
-        } else {
-          std::ostringstream ratio;
-          ratio << std::fixed << std::setprecision(6) << static_cast<double>(r.predicted / r.measured);
-          std::cout << std::setw(12) << text << std::setw(10) << o.steps << std::setw(16) << predicted << std::setw(16) << measured
-                    << std::setw(12) << (ok ? ratio.str() : "nan") << '\n';
-        }
-        if (m.symplectic)
-          messages << o.program << ": tau = " << text << ": quadrature error estimate " << sci(r.quadrature) << '\n';
-      }
-      bar.finish();
-      std::cerr << messages.str();
-      return status;
     }
+    for (const auto& [flag, values] : {std::pair{"--q0", &o.q0}, std::pair{"--p0", &o.p0}}) {
+      if (!values->empty() && values->size() != static_cast<std::size_t>(Sys::dof))
+        throw cli::usage_error(std::string(flag) + " needs " + std::to_string(Sys::dof) + " value(s) for --system " + o.system);
+      for (const std::string& s : *values) parse_number<T>(flag, s);
+    }
+    int status = 0;
+    const char* header = m.symplectic || m.accumulated ? "tau,steps,predicted_max_energy_error,measured_max_energy_error"
+                                                       : "tau,steps,predicted_drift_rate,measured_drift_rate";
+    if (o.csv) std::cout << header << '\n';
+    else
+      std::cout << m.label << " on " << o.system << " (order " << m.order << ", "
+                << (m.symplectic ? "symplectic: max |H - H0|"
+                                 : m.accumulated ? "Nystrom form in (q, v): max |E - E0|" : "not symplectic: dH/dt")
+                << ", " << o.terms
+                << " term(s), " << o.digits << " digits)\n"
+                << std::setw(12) << "tau" << std::setw(10) << "steps" << std::setw(16) << "predicted" << std::setw(16)
+                << "measured" << std::setw(12) << "ratio" << '\n';
+    // The steps of every tau, counted by the progress line; the messages of the runs are held
+    // until it is erased.
+    progress bar(o.program, o.tau.size() * static_cast<std::size_t>(o.steps), "steps");
+    std::ostringstream messages;
+    std::size_t done = 0;
+    for (const std::string& text : o.tau) {
+      const T tau = parse_number<T>("--tau", text);
+      const row<T> r = run_case<Sys, T>(list, o, m, tau, bar, done);
+      done += static_cast<std::size_t>(o.steps);
+      if (!r.failure.empty()) {
+        messages << o.program << ": tau = " << text << ": " << r.failure << '\n';
+        status = cli::exit_run_failure;
+      }
+      // A failed run is no measurement: its row says nan.
+      const bool ok = r.failure.empty();
+      const std::string predicted = ok ? sci(r.predicted) : "nan", measured = ok ? sci(r.measured) : "nan";
+      if (o.csv) {
+        std::cout << text << ',' << o.steps << ',' << predicted << ',' << measured << '\n';
+      } else {
+        std::ostringstream ratio;
+        ratio << std::fixed << std::setprecision(6) << static_cast<double>(r.predicted / r.measured);
+        std::cout << std::setw(12) << text << std::setw(10) << o.steps << std::setw(16) << predicted << std::setw(16) << measured
+                  << std::setw(12) << (ok ? ratio.str() : "nan") << '\n';
+      }
+      if (m.symplectic)
+        messages << o.program << ": tau = " << text << ": quadrature error estimate " << sci(r.quadrature) << '\n';
+    }
+    bar.finish();
+    std::cerr << messages.str();
+    return status;
   });
 }
 

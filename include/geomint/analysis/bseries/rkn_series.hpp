@@ -23,6 +23,13 @@
 /// Nystrom trees only, also in the modified field (an edge cut of a Nystrom tree gives Nystrom
 /// trees). tests/analysis/test_bseries_elementary_differentials.cpp checks the result against
 /// elementary_weights of the partitioned form of the same method read from a tableau file.
+///
+/// LPF on a Lagrangian that is not natural (docs/results/schemes.md, "LPF as a Nystrom
+/// method"): the same collocation tableau is the Nystrom method for q'' = F(q, q') with the
+/// velocity stages V_i = v + h sum_j ap_ij F_j, ap_ij = int_0^{c_i} l_j(u) du, i.e. on stage
+/// vectors Ap: V -> int_0^x V(u) du mod N. Its series (collocation_nystrom_weights) is the one
+/// above on the Nystrom trees of F(q, q') (is_nystrom_tree, not velocity_free), with one more
+/// rule: a colour-1 child w of a colour-1 vertex feeds Ap Psi(w) (the direction V_i - v).
 
 #include <stdexcept>
 #include <vector>
@@ -36,19 +43,32 @@
 
 namespace geomint::analysis::bseries {
 
-/// The Nystrom trees of a two-colour tree_set for F = F(q) (is_nystrom_tree, velocity_free).
-inline std::vector<bool> nystrom_trees(const tree_set& trees) {
+/// The Nystrom trees of a two-colour tree_set for F = F(q) (velocity_free) or F(q, q')
+/// (is_nystrom_tree).
+inline std::vector<bool> nystrom_trees(const tree_set& trees, bool velocity_free = true) {
   std::vector<bool> wanted(static_cast<std::size_t>(trees.size()));
-  for (int t = 0; t < trees.size(); ++t) wanted[static_cast<std::size_t>(t)] = is_nystrom_tree(trees, t, true);
+  for (int t = 0; t < trees.size(); ++t) wanted[static_cast<std::size_t>(t)] = is_nystrom_tree(trees, t, velocity_free);
   return wanted;
 }
 
-/// a(t) of one step of the exact RKN tableau on every Nystrom tree of `trees` (two colours),
-/// 0 on the others; exact rationals.
-inline std::vector<methods::exact_rational> elementary_weights(const tree_set& trees, const exact_rkn_tableau& method) {
+namespace detail {
+/// Ap of a collocation tableau in the monomial basis: x^k -> x^(k+1) / (k + 1) mod N.
+inline stage_vector collocation_velocity_stages(const exact_rkn_tableau& method, const stage_vector& u) {
+  exact_number p[max_exact_stages + 1];
+  for (int k = 0; k < method.stages; ++k) p[k + 1] = u[k] * geomint::analysis::detail::fraction(1, k + 1);
+  method.reduce(p, method.stages);
+  stage_vector r;
+  for (int i = 0; i < method.stages; ++i) r[i] = p[i];
+  return r;
+}
+
+/// a(t) on the Nystrom trees of F(q) (velocity_free) or of F(q, q') (Ap: the method's velocity
+/// stages), 0 on the others; exact rationals.
+inline std::vector<methods::exact_rational> nystrom_weights(const tree_set& trees, const exact_rkn_tableau& method,
+                                                            bool velocity_free) {
   if (trees.colours() != 2)
     throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: an RKN tableau needs two-colour trees");
-  const std::vector<bool> wanted = nystrom_trees(trees);
+  const std::vector<bool> wanted = nystrom_trees(trees, velocity_free);
   const auto n = static_cast<std::size_t>(trees.size());
   std::vector<stage_vector> psi(n), fed(n);  // fed[t] = Y(t) for a colour-0 tree t
   std::vector<exact_number> a(n);
@@ -57,7 +77,10 @@ inline std::vector<methods::exact_rational> elementary_weights(const tree_set& t
     const rooted_tree& tree = trees[static_cast<int>(t)];
     if (tree.colour == 1) {
       psi[t] = method.one;
-      for (int w : tree.subtrees) psi[t] = method.multiply(psi[t], fed[static_cast<std::size_t>(w)]);
+      for (int w : tree.subtrees) {
+        const auto child = static_cast<std::size_t>(w);
+        psi[t] = method.multiply(psi[t], trees[w].colour == 0 ? fed[child] : collocation_velocity_stages(method, psi[child]));
+      }
       a[t] = method.apply_b(psi[t]);
     } else if (tree.subtrees.empty()) {
       fed[t] = method.c;
@@ -74,6 +97,22 @@ inline std::vector<methods::exact_rational> elementary_weights(const tree_set& t
       out[t] = methods::exact_rational(boost::multiprecision::cpp_int(a[t].num.str()),
                                        boost::multiprecision::cpp_int(a[t].den().str()));
   return out;
+}
+}  // namespace detail
+
+/// a(t) of one step of the exact RKN tableau on every Nystrom tree of `trees` (two colours,
+/// F = F(q)), 0 on the others; exact rationals.
+inline std::vector<methods::exact_rational> elementary_weights(const tree_set& trees, const exact_rkn_tableau& method) {
+  return detail::nystrom_weights(trees, method, true);
+}
+
+/// a(t) of the collocation Nystrom method of a collocation tableau (lpf_tableau, monomial basis)
+/// on q'' = F(q, q'): every Nystrom tree of F(q, q'), 0 on the others; exact rationals.
+/// std::invalid_argument for a tableau that is not a collocation tableau.
+inline std::vector<methods::exact_rational> collocation_nystrom_weights(const tree_set& trees, const exact_rkn_tableau& method) {
+  if (method.basis != stage_basis::monomial)
+    throw std::invalid_argument("geomint::analysis::bseries::collocation_nystrom_weights: a collocation tableau (monomial basis) is needed");
+  return detail::nystrom_weights(trees, method, false);
 }
 
 }  // namespace geomint::analysis::bseries
