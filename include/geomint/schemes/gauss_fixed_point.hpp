@@ -58,7 +58,22 @@ namespace schemes::detail {
 /// mu_i'j' = mu_ij + c_j - c_i (i' = s-1-i) hold exactly in T (methods/symplectic_rounding.hpp).
 template <class T, int S>
 struct gauss_nystrom_coefficients : methods::symplectic_rkn<T, S> {
+  /// Computed once per (T, S) and copied: in 50 digits the Gauss rule and the rounding cost more
+  /// than the steps of a short run (docs/results/performance.md). A function-local static is
+  /// initialised once, thread-safely, and again on the next call if its computation threw. A
+  /// variable-precision T (numeric_limits digits INT_MAX, e.g. Boost's mpfr_float) depends on
+  /// the precision set at run time, so it is computed every time.
   static gauss_nystrom_coefficients make() {
+    if constexpr (std::numeric_limits<T>::digits < std::numeric_limits<int>::max()) {
+      static const gauss_nystrom_coefficients once = compute();
+      return once;
+    } else {
+      return compute();
+    }
+  }
+
+ private:
+  static gauss_nystrom_coefficients compute() {
     gauss_nystrom_coefficients k;
     static_cast<methods::symplectic_rkn<T, S>&>(k) = methods::symplecticize(methods::gauss_collocation_rkn<T, S>());
     if (!k.mirrored) throw std::logic_error("geomint: the Gauss coefficients lost their symmetry in rounding");
