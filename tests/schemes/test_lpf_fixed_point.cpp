@@ -131,8 +131,8 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the coefficients computed once are tho
       k.c[0] = T(7);  // the holder's copy only
     }
   };
-  same_as_fresh.template operator()<7>();
-  same_as_fresh.template operator()<15>();
+  same_as_fresh.template operator()<3>();
+  same_as_fresh.template operator()<7>();  // (not S = 15: 1.2 s more under the sanitizers, the same code)
 }
 
 TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: integrators built one after the other take the steps of one built alone",
