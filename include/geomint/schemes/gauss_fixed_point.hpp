@@ -55,13 +55,38 @@ namespace schemes::detail {
 
 /// The coefficients c, e = 1 - c, b and mu = a / b of the Nystrom collocation method at the s
 /// Gauss points (methods/collocation_rkn.hpp), rounded so that the symplecticity conditions and the symmetry
-/// mu_i'j' = mu_ij + c_j - c_i (i' = s-1-i) hold exactly in T (methods/symplectic_rounding.hpp).
+/// mu_i'j' = mu_ij + c_j - c_i (i' = s-1-i) hold exactly in T (methods/symplectic_rounding.hpp);
+/// with them the weights of the engine's predictor.
 template <class T, int S>
 struct gauss_nystrom_coefficients : methods::symplectic_rkn<T, S> {
+  /// The predictor of a continuing step: extrapolate_ij = b_i l_j(1 + c_i) / b_j (l_j the
+  /// Lagrange basis on the nodes c), which carries the increments F_j = tau b_j f_j of the
+  /// previous step's force polynomial (degree S-1 through its S stages) to this step's stages.
+  methods::stage_matrix<T, S> extrapolate{};
+
+  /// Computed once per (T, S) and copied: in 50 digits the Gauss rule and the rounding cost more
+  /// than the steps of a short run (docs/results/performance.md). A function-local static is
+  /// initialised once, thread-safely, and again on the next call if its computation threw. A
+  /// variable-precision T (numeric_limits digits INT_MAX, e.g. Boost's mpfr_float) depends on
+  /// the precision set at run time, so it is computed every time.
   static gauss_nystrom_coefficients make() {
+    if constexpr (std::numeric_limits<T>::digits < std::numeric_limits<int>::max()) {
+      static const gauss_nystrom_coefficients once = compute();
+      return once;
+    } else {
+      return compute();
+    }
+  }
+
+ private:
+  static gauss_nystrom_coefficients compute() {
     gauss_nystrom_coefficients k;
     static_cast<methods::symplectic_rkn<T, S>&>(k) = methods::symplecticize(methods::gauss_collocation_rkn<T, S>());
     if (!k.mirrored) throw std::logic_error("geomint: the Gauss coefficients lost their symmetry in rounding");
+    for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) {
+      const auto l = lagrange_values_at(k.c, T(T(1) + k.c[i]));
+      for (std::size_t j = 0; j < static_cast<std::size_t>(S); ++j) k.extrapolate[i][j] = k.b[i] * l[j] / k.b[j];
+    }
     return k;
   }
 };
@@ -94,14 +119,6 @@ class gauss_fixed_point_engine {
 
   explicit gauss_fixed_point_engine(const Sys& sys)
       : sys_(sys), k_(gauss_nystrom_coefficients<T, S>::make()), minv_(inverse_of<T, n>(Sys::template mass_matrix<T>())) {
-    // The next step's stage values of the previous step's force polynomial (degree S-1
-    // through the S stages), evaluated at 1 + c_i: the predictor of a continuing step.
-    for (int i = 0; i < S; ++i) {
-      const auto l = lagrange_values_at(k_.c, T(T(1) + k_.c[static_cast<std::size_t>(i)]));
-      for (int j = 0; j < S; ++j)
-        extrapolate_[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
-            k_.b[static_cast<std::size_t>(i)] * l[static_cast<std::size_t>(j)] / k_.b[static_cast<std::size_t>(j)];
-    }
     if constexpr (!std::is_floating_point_v<T>) {
       for (std::size_t I = 0; I < static_cast<std::size_t>(H); ++I)
         for (std::size_t J = 0; J < static_cast<std::size_t>(H); ++J) {
@@ -109,7 +126,7 @@ class gauss_fixed_point_engine {
           mirror_sum_[I][J] = (k_.mu[I][J] + k_.mu[I][Jm]) / T(2);  // exact: grid values
           mirror_difference_[I][J] = (k_.mu[I][J] - k_.mu[I][Jm]) / T(2);
         }
-      in_double_ = stages_in_double<Sys, S>(k_.mu, extrapolate_, minv_);
+      in_double_ = stages_in_double<Sys, S>(k_.mu, k_.extrapolate, minv_);
     }
   }
 
@@ -170,7 +187,7 @@ class gauss_fixed_point_engine {
     if (!presolved && continues) {
       for (int i = 0; i < S; ++i) {
         V x = V::Zero();
-        for (int j = 0; j < S; ++j) x += extrapolate_[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * mem->F[static_cast<std::size_t>(j)];
+        for (int j = 0; j < S; ++j) x += k_.extrapolate[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] * mem->F[static_cast<std::size_t>(j)];
         F[static_cast<std::size_t>(i)] = x;
       }
     } else if (!presolved) {
@@ -508,7 +525,6 @@ class gauss_fixed_point_engine {
   bool unit_mass_ = minv_ == mat<T, n>::Identity();
   bool diagonal_mass_ = minv_ == mat<T, n>(minv_.diagonal().asDiagonal());
   V minv_diagonal_ = minv_.diagonal();
-  std::array<std::array<T, S>, S> extrapolate_{};
   /// mu transposed: mu_by_column_[j][i] = mu_ij (jacobi_combination).
   std::array<std::array<T, S>, S> mu_by_column_ = [this] {
     std::array<std::array<T, S>, S> t{};
