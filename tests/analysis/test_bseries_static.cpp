@@ -21,18 +21,20 @@
 ///   Phi = sum b_i c_i^4 = 2/3 (1/2)^4 + 1/6 = 5/24, error 5/24 - 1/5 = 1/120, and the tall
 ///   tree [[[[.]]]] has Phi = b^T A^3 c = 0 (A strictly lower with one nonzero subdiagonal),
 ///   error -1/120;
-/// - Stormer-Verlet as the Lobatto IIIA-IIIB pair (HLW section II.2.2; IIIA on q, colour 0,
-///   IIIB on p, colour 1: p_{1/2} = p + h/2 g(q), q1 = q + h f(p_{1/2}), p1 = p_{1/2} +
-///   h/2 g(q1)): order 2; its modified Hamiltonian for H = T(p) + U(q) is, by the symmetric
-///   Baker-Campbell-Hausdorff formula of the splitting e^{h/2 U} e^{h T} e^{h/2 U} (HLW
-///   section III.4.2 and IX.4; double Poisson brackets {U,{U,T}} = T'' U'^2,
-///   {T,{U,T}} = -U'' T'^2),
-///     H~ = H + h^2 (1/12 U''(T', T') - 1/24 T''(U', U')) + O(h^4),
-///   and q' = dH~/dp, p' = -dH~/dq with f = T'(p) (colour 0) and g = -U'(q) (colour 1) give the
-///   order-3 coefficients b/sigma of the separable P-trees:
-///     f''(g,g): -1/24,  f'g'f: -1/6,  g''(f,f): 1/12,  g'f'g: 1/12.
-///   (Check on T = p^2/2, U = q^2/2: H~ = (1 + h^2/6) p^2/2 + (1 - h^2/12) q^2/2, whose ratio
-///   1 - h^2/4 + O(h^4) is that of the exact invariant p^2 + (1 - h^2/4) q^2 of the step.)
+/// - Stormer-Verlet as a Lobatto IIIA-IIIB pair (HLW section II.2.2), colour 0 = q with
+///   f = T'(p), colour 1 = p with g = -U'(q), H = T(p) + U(q): order 2 in both variants. With
+///   half steps in q (q by IIIB, p by IIIA: drift-kick-drift) HLW section IX.3 prints the
+///   modified Hamiltonian
+///     H~ = H + h^2 (-1/24 U''(T', T') + 1/12 T''(U', U')) + O(h^4);
+///   with half steps in p (q by IIIA, p by IIIB: kick-drift-kick) the roles of T and U are
+///   exchanged, H~ = H + h^2 (1/12 U''(T', T') - 1/24 T''(U', U')) + O(h^4) (the symmetric
+///   Baker-Campbell-Hausdorff formula of HLW section III.4.2 for e^{h/2 U} e^{h T} e^{h/2 U};
+///   on T = p^2/2, U = q^2/2 its ratio (1 - h^2/12)/(1 + h^2/6) = 1 - h^2/4 + O(h^4) of the
+///   q^2 to the p^2 coefficient is that of the step's exact invariant p^2 + (1 - h^2/4) q^2).
+///   q' = dH~/dp and p' = -dH~/dq, written with f''(g,g) = T''' U'^2, f'g'f = -T'' U'' T',
+///   g''(f,f) = -U''' T'^2, g'f'g = U'' T'' U', give the coefficients b/sigma of these four
+///   order-3 P-trees: kick-drift-kick -1/24, -1/6, 1/12, 1/12; drift-kick-drift 1/12, 1/12,
+///   -1/24, -1/6.
 ///
 /// Cost: everything fits the default evaluation limits of g++ 12 (-fconstexpr-ops-limit) and
 /// clang++ 14 (-fconstexpr-steps); the largest evaluations are the one-colour trees of order 6
@@ -140,13 +142,16 @@ constexpr order_5_values rk4_series() {
 static_assert(rk4_series().order == 4);
 static_assert(rk4_series().bushy_error == rational(1, 120) && rk4_series().tall_error == rational(-1, 120));
 
-// ---- Stormer-Verlet, Lobatto IIIA (colour 0, q) - IIIB (colour 1, p) ----
-constexpr auto verlet = methods::make_prk<rational>({0, 1}, {{0, 0}, {half, half}}, {half, half}, {{half, 0}, {half, 0}}, {half, half});
+// ---- Stormer-Verlet, colour 0 = q, colour 1 = p ----
+constexpr rational iiia[2][2] = {{0, 0}, {half, half}}, iiib[2][2] = {{half, 0}, {half, 0}};
+constexpr auto kick_drift_kick = methods::make_prk<rational>({0, 1}, iiia, {half, half}, iiib, {half, half});
+constexpr auto drift_kick_drift = methods::make_prk<rational>({0, 1}, iiib, {half, half}, iiia, {half, half});
 struct verlet_values {
   int order;
   rational f_gg, f_g_f, g_ff, g_f_g;  // b / sigma of f''(g,g), f'g'f, g''(f,f), g'f'g
 };
-constexpr verlet_values verlet_series() {
+template <class Pair>
+constexpr verlet_values verlet_series(const Pair& verlet) {
   const tree_set t(3, 2);
   const auto a = bs::elementary_weights(t, verlet);
   const auto b = bs::modified_field(t, a);
@@ -155,8 +160,11 @@ constexpr verlet_values verlet_series() {
   return {bs::series_order(t, a), over_sigma(t.find(0, {g, g})), over_sigma(t.find(0, {t.find(1, {f})})),
           over_sigma(t.find(1, {f, f})), over_sigma(t.find(1, {t.find(0, {g})}))};
 }
-static_assert(verlet_series().order == 2);
-static_assert(verlet_series().f_gg == rational(-1, 24) && verlet_series().f_g_f == rational(-1, 6));
-static_assert(verlet_series().g_ff == rational(1, 12) && verlet_series().g_f_g == rational(1, 12));
+constexpr verlet_values kdk = verlet_series(kick_drift_kick), dkd = verlet_series(drift_kick_drift);
+static_assert(kdk.order == 2 && dkd.order == 2);
+static_assert(kdk.f_gg == rational(-1, 24) && kdk.f_g_f == rational(-1, 6) && kdk.g_ff == rational(1, 12) &&
+              kdk.g_f_g == rational(1, 12));
+static_assert(dkd.f_gg == rational(1, 12) && dkd.f_g_f == rational(1, 12) && dkd.g_ff == rational(-1, 24) &&
+              dkd.g_f_g == rational(-1, 6));
 
 }  // namespace
