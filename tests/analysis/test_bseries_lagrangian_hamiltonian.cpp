@@ -19,6 +19,9 @@
 #include "catch.hpp"
 #include "geomint/analysis/bseries/elementary_differentials.hpp"
 #include "geomint/analysis/bseries/lagrangian_hamiltonian.hpp"
+#include "geomint/analysis/bseries/rkn_series.hpp"
+#include "geomint/analysis/bseries/series.hpp"
+#include "geomint/analysis/rkn_tableau.hpp"
 #include "geomint/integrator.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/schemes/classical.hpp"
@@ -93,6 +96,22 @@ TEMPLATE_TEST_CASE("lagrangian hamiltonian: the implicit velocity's derivatives 
   check_close(T(v0 + v0 * v0 * v0 / T(3)), p);
   check_close(v[0].v.d[0], T(T(1) / (T(1) + v0 * v0)));
   check_close(v[0].d[0].d[0], T(-T(2) * v0 / ((T(1) + v0 * v0) * (T(1) + v0 * v0) * (T(1) + v0 * v0))));
+}
+
+TEST_CASE("collocation_rk_weights: the Gauss methods' B-series", "[bseries]") {
+  using Q = geomint::methods::exact_rational;
+  const geomint::analysis::bseries::tree_set trees(7, 1);
+  // s = 1 on Gauss nodes: the midpoint rule a = 1/2, b = 1, c = 1/2, by series.hpp from its tableau.
+  geomint::methods::tableau_data<Q> midpoint;
+  midpoint.kind = geomint::methods::method_kind::rk;
+  midpoint.stages = 1;
+  midpoint.a = {{Q(1, 2)}};
+  midpoint.b = {Q(1)};
+  midpoint.c = {Q(1, 2)};
+  CHECK(collocation_rk_weights(trees, geomint::galerkin_tableau<1>()) == elementary_weights(trees, midpoint));
+  // The s-stage Gauss method has order 2s exactly (HLW section II.1.3).
+  CHECK(series_order(trees, collocation_rk_weights(trees, geomint::galerkin_tableau<2>())) == 4);
+  CHECK(series_order(trees, collocation_rk_weights(trees, geomint::galerkin_tableau<3>())) == 6);
 }
 
 /// One step of the 2-stage Gauss method (HLW Table II.1.1: c = 1/2 -+ sqrt(3)/6,

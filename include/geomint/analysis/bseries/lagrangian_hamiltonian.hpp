@@ -13,8 +13,11 @@
 /// of the base scalar. grad H = (-L_q(q, v), v) (the v-derivative of p . v - L vanishes at
 /// L_v = p) is supplied as `gradient`, so hamiltonian_field needs no extra level of AD.
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "geomint/ad/dual.hpp"
 #include "geomint/ad/multilinear_jet.hpp"
