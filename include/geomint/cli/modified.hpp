@@ -215,12 +215,8 @@ inline method_series lagrangian_series_of(const options& o, method_series m, con
                            "stages, while Lobatto IIIB forces equal stage momenta; galerkin and midpoint have a prediction");
   if (o.scheme == "galerkin" || o.scheme == "midpoint") {
     const int stages = o.scheme == "midpoint" ? 1 : o.m;
-    const int n = needed_order(o, m.order);
-    if (n > max_tree_order_one_colour)
-      throw cli::usage_error("--terms: trees of order " + std::to_string(n) + " needed, at most " +
-                             std::to_string(max_tree_order_one_colour) + " for " + o.scheme + here);
     m.one_colour = true;
-    m.trees = tree_set(n, 1);
+    m.trees = tree_set(needed_order(o, m.order), 1);  // at most 9: series_of checked it
     m.wanted.assign(static_cast<std::size_t>(m.trees.size()), true);
     std::vector<field_element> a;
     for (const exact_rational& x : with_int<1, max_exact_stages>(stages, [&]<int M>() {
