@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "bseries_lagrangians.hpp"
 #include "catch.hpp"
 #include "geomint/analysis/bseries/elementary_differentials.hpp"
 #include "geomint/analysis/bseries/lagrangian_field.hpp"
@@ -24,15 +25,8 @@ namespace bseries_lagrangian_field_test {
 
 using namespace geomint::analysis::bseries;
 using geomint::vec;
-
-/// L = (1 + q^2) qdot^2 / 2 - q^4 / 4.
-struct variable_mass {
-  static constexpr int dof = 1;
-  template <class S>
-  S operator()(const vec<S, 1>& q, const vec<S, 1>& v) const {
-    return S((S(1) + q[0] * q[0]) * v[0] * v[0] / S(2) - q[0] * q[0] * q[0] * q[0] / S(4));
-  }
-};
+using bseries_lagrangians::check_close;
+using bseries_lagrangians::variable_mass;
 
 /// L = qdot^2 / 2 for qdot > 0, L_vv = 0 at qdot = 0: degenerate there.
 struct degenerate {
@@ -40,12 +34,6 @@ struct degenerate {
   template <class S>
   S operator()(const vec<S, 1>&, const vec<S, 1>& v) const { return S(v[0] * v[0] * v[0] / S(6)); }
 };
-
-template <class T>
-void check_close(const T& value, const T& expected) {
-  using std::abs;
-  CHECK(T(abs(T(value - expected))) <= T(64) * std::numeric_limits<T>::epsilon() * (T(1) + T(abs(expected))));
-}
 
 TEMPLATE_TEST_CASE("lagrangian field: a position-dependent mass", "[bseries]", double, boost::multiprecision::cpp_bin_float_50) {
   using T = TestType;

@@ -18,6 +18,7 @@
 
 #include "geomint/analysis/bseries/energy_prediction.hpp"
 #include "geomint/analysis/bseries/lagrangian_field.hpp"
+#include "geomint/analysis/bseries/lagrangian_hamiltonian.hpp"
 #include "geomint/analysis/bseries/method_analysis.hpp"
 #include "geomint/analysis/bseries/modified_equation.hpp"
 #include "geomint/analysis/bseries/modified_hamiltonian.hpp"
@@ -72,7 +73,9 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "  not natural:  a Lagrangian that is not natural (lpf; rk and nystrom tableaux): the step is a\n"
     "                Nystrom method in y = (q, v) for q'' = F(q, q') (Legendre maps at both ends), so\n"
     "                E(y_n) - E(y_0) (E = v . L_v - L = H) is predicted as the integral over [0, t_n]\n"
-    "                of sum_j h^(p+j-1) grad E . f_{p+j}(y); CSV and maxima as for symplectic\n"
+    "                of sum_j h^(p+j-1) grad E . f_{p+j}(y); CSV and maxima as for symplectic.\n"
+    "                galerkin and midpoint there are the Gauss RK method on H(q, p) = p . v - L:\n"
+    "                symplectic, in (q, p); trapezoidal has no prediction there\n"
     "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); p + K at most 9\n"
     "  --digits D    working precision 16 (default), 50 or 100\n"
     "Initial data as geomint-run (--p0 the momentum); the step monitor is on (--no-monitor turns it\n"
@@ -195,16 +198,36 @@ inline method_series series_of(const options& o) {
 /// H(q_n, p_n) = E(q_n, v_n) (docs/results/schemes.md, "LPF as a Nystrom method"): lpf by its
 /// collocation Nystrom weights on the Nystrom trees of F(q, q') (rkn_series.hpp); an rk or
 /// nystrom tableau as series_of has it (its stepper runs that Nystrom form in (q, v),
-/// methods/tableau_method.hpp). The others have no such form: usage_error naming why. The
-/// method is not symplectic there in general (docs/results/schemes.md, item 5), so the
-/// prediction is the accumulated energy error.
+/// methods/tableau_method.hpp). The method is not symplectic there in general
+/// (docs/results/schemes.md, item 5), so the prediction is the accumulated energy error.
+/// galerkin (degree m, m-point Gauss quadrature) and midpoint (its m = 1) step (q, p) as the
+/// Gauss collocation RK method on H(q, p) = p . v - L (HLW, Geometric Numerical Integration,
+/// 2006, Theorem VI.6.4: Ahat = A for Gauss quadrature; the same B-series on every colouring,
+/// so the one-colour trees, collocation_rk_weights): symplectic, predicted in (q, p) with the
+/// field of lagrangian_hamiltonian.hpp. trapezoidal (Lobatto quadrature) is outside the
+/// theorem: usage_error naming why.
 inline method_series lagrangian_series_of(const options& o, method_series m, const std::string& system) {
   const std::string here = " on --system " + system + " (a Lagrangian that is not natural)";
-  if (o.scheme == "midpoint" || o.scheme == "trapezoidal" || o.scheme == "galerkin")
-    throw cli::usage_error("--scheme " + o.scheme + here + ": no prediction: the series of this variational integrator "
-                           "is its exact RKN tableau (analysis/rkn_tableau.hpp), its map on natural systems only; here it "
-                           "steps (q, p) through its discrete Lagrangian, with no Nystrom form in (q, v) (lpf and rk or "
-                           "nystrom tableaux have one)");
+  if (o.scheme == "trapezoidal")
+    throw cli::usage_error("--scheme trapezoidal" + here + ": no prediction: its two-point Lobatto quadrature is outside "
+                           "the Galerkin theorem (Hairer, Lubich & Wanner 2006, Theorem VI.6.4), which makes a variational "
+                           "integrator a partitioned RK method in (q, p): the path of degree 1 has equal velocities at both "
+                           "stages, while Lobatto IIIB forces equal stage momenta; galerkin and midpoint have a prediction");
+  if (o.scheme == "galerkin" || o.scheme == "midpoint") {
+    const int stages = o.scheme == "midpoint" ? 1 : o.m;
+    m.one_colour = true;
+    m.trees = tree_set(needed_order(o, m.order), 1);  // at most 9: series_of checked it
+    m.wanted.assign(static_cast<std::size_t>(m.trees.size()), true);
+    std::vector<field_element> a;
+    for (const exact_rational& x : with_int<1, max_exact_stages>(stages, [&]<int M>() {
+           return collocation_rk_weights(m.trees, galerkin_tableau<M>());
+         }))
+      a.emplace_back(x);
+    m.b = modified_field(m.trees, a);
+    m.symplectic = true;
+    m.symplecticity_basis = "Gauss RK method on H(q, p)";
+    return m;
+  }
   if (!o.tableau.empty()) {
     const methods::method_kind kind = methods::read_tableau_file(o.tableau).kind;
     if (kind == methods::method_kind::rkn || kind == methods::method_kind::prk)
@@ -331,7 +354,7 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
   std::vector<T> times, errors;
   for (long k = 0;; ++k) {
     state y;
-    if constexpr (natural_system<Sys>) {
+    if (!m.accumulated) {
       y << q, p;
     } else {  // (q, v): v by the inverse Legendre map
       vec<T, n> v;
@@ -363,15 +386,22 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
       r.measured = std::max(r.measured, T(abs(errors[k])));
     }
   };
-  if constexpr (!natural_system<Sys>) {
-    const lagrangian_field<Sys> field{};
-    take_maxima(predict_energy_change(terms, field, ys, tau, [&](const state& y) { return field.energy_gradient(y); }));
-  } else if (m.symplectic) {
-    const auto prediction = predict_energy_error(terms, natural_field<Sys, T>{}, ys, tau);
+  const auto symplectic_prediction = [&](const auto& field) {
+    const auto prediction = predict_energy_error(terms, field, ys, tau);
     take_maxima(prediction.error);
     r.quadrature = prediction.quadrature_estimate;
     if (!(r.quadrature <= r.predicted / 1000))
       r.failure = "the quadrature's error estimate " + sci(r.quadrature) + " is above 1/1000 of the prediction";
+  };
+  if constexpr (!natural_system<Sys>) {
+    if (m.symplectic) {
+      symplectic_prediction(hamiltonian_field<lagrangian_hamiltonian<Sys>, n>{});
+    } else {
+      const lagrangian_field<Sys> field{};
+      take_maxima(predict_energy_change(terms, field, ys, tau, [&](const state& y) { return field.energy_gradient(y); }));
+    }
+  } else if (m.symplectic) {
+    symplectic_prediction(natural_field<Sys, T>{});
   } else {
     const std::vector<T> rate = predict_energy_rate(terms, natural_field<Sys, T>{}, ys, tau);
     for (const T& x : rate) r.predicted += x;

@@ -152,7 +152,9 @@ struct natural_field {
 
 /// y' = J^{-1} grad H(y), y = (q, p) with n = dimension / 2: q' = H_p, p' = -H_q; H a functor
 /// templated on its scalar, `template <class S> S operator()(const geomint::vec<S, 2n>& y) const`.
-/// Colour 0 is q, colour 1 is p.
+/// Colour 0 is q, colour 1 is p. grad H from the Hamiltonian's own
+/// `template <class S> vec<S, 2n> gradient(const vec<S, 2n>& y) const` if it supplies one, else
+/// by one dual level over S.
 template <class Hamiltonian, int n>
 struct hamiltonian_field {
   static constexpr int dimension = 2 * n;
@@ -161,8 +163,12 @@ struct hamiltonian_field {
 
   template <class S>
   vec<S, dimension> operator()(const vec<S, dimension>& y) const {
-    const vec<S, dimension> g = detail::gradient<dimension, S>(
-        [this](const auto& x) { return hamiltonian.template operator()<typename std::decay_t<decltype(x)>::Scalar>(x); }, y);
+    vec<S, dimension> g;
+    if constexpr (requires { hamiltonian.template gradient<S>(y); })
+      g = hamiltonian.template gradient<S>(y);
+    else
+      g = detail::gradient<dimension, S>(
+          [this](const auto& x) { return hamiltonian.template operator()<typename std::decay_t<decltype(x)>::Scalar>(x); }, y);
     vec<S, dimension> out;
     for (int i = 0; i < n; ++i) {
       out[i] = g[n + i];

@@ -62,6 +62,16 @@ inline stage_vector collocation_velocity_stages(const exact_rkn_tableau& method,
   return r;
 }
 
+/// The exact numbers a[t] as rationals where `wanted`, 0 elsewhere.
+inline std::vector<methods::exact_rational> to_rationals(const std::vector<exact_number>& a, const std::vector<bool>& wanted) {
+  std::vector<methods::exact_rational> out(a.size(), methods::exact_rational(0));
+  for (std::size_t t = 0; t < a.size(); ++t)
+    if (wanted[t])
+      out[t] = methods::exact_rational(boost::multiprecision::cpp_int(a[t].num.str()),
+                                       boost::multiprecision::cpp_int(a[t].den().str()));
+  return out;
+}
+
 /// a(t) on the Nystrom trees of F(q) (velocity_free) or of F(q, q') (Ap: the method's velocity
 /// stages), 0 on the others; exact rationals.
 inline std::vector<methods::exact_rational> nystrom_weights(const tree_set& trees, const exact_rkn_tableau& method,
@@ -91,12 +101,7 @@ inline std::vector<methods::exact_rational> nystrom_weights(const tree_set& tree
       a[t] = method.apply_bbar(psi[v]);
     }
   }
-  std::vector<methods::exact_rational> out(n, methods::exact_rational(0));
-  for (std::size_t t = 0; t < n; ++t)
-    if (wanted[t])
-      out[t] = methods::exact_rational(boost::multiprecision::cpp_int(a[t].num.str()),
-                                       boost::multiprecision::cpp_int(a[t].den().str()));
-  return out;
+  return to_rationals(a, wanted);
 }
 }  // namespace detail
 
@@ -113,6 +118,30 @@ inline std::vector<methods::exact_rational> collocation_nystrom_weights(const tr
   if (method.basis != stage_basis::monomial)
     throw std::invalid_argument("geomint::analysis::bseries::collocation_nystrom_weights: a collocation tableau (monomial basis) is needed");
   return detail::nystrom_weights(trees, method, false);
+}
+
+/// a(t) = Phi(t) of one step of the collocation Runge-Kutta method on the nodes of a collocation
+/// tableau (monomial basis; galerkin_tableau: the Gauss method), on every tree of a one-colour
+/// tree_set (its B-series, series.hpp): g(leaf) = 1, g([t_1..t_k]) = prod_j A g(t_j) with
+/// A: V -> int_0^x V(u) du mod N (the collocation coefficients a_ij = int_0^{c_i} l_j), and
+/// Phi(t) = b(g(t)) (HLW section III.1.2). A partitioned pair with Ahat = A, bhat = b has these
+/// coefficients on every colouring of t. std::invalid_argument for two-colour trees or a tableau
+/// that is not a collocation tableau.
+inline std::vector<methods::exact_rational> collocation_rk_weights(const tree_set& trees, const exact_rkn_tableau& method) {
+  if (trees.colours() != 1)
+    throw std::invalid_argument("geomint::analysis::bseries::collocation_rk_weights: a Runge-Kutta method's B-series needs one-colour trees");
+  if (method.basis != stage_basis::monomial)
+    throw std::invalid_argument("geomint::analysis::bseries::collocation_rk_weights: a collocation tableau (monomial basis) is needed");
+  const auto n = static_cast<std::size_t>(trees.size());
+  std::vector<stage_vector> g(n);
+  std::vector<exact_number> a(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    g[t] = method.one;
+    for (int w : trees[static_cast<int>(t)].subtrees)
+      g[t] = method.multiply(g[t], detail::collocation_velocity_stages(method, g[static_cast<std::size_t>(w)]));
+    a[t] = method.apply_b(g[t]);
+  }
+  return detail::to_rationals(a, std::vector<bool>(n, true));
 }
 
 }  // namespace geomint::analysis::bseries
