@@ -248,4 +248,16 @@ class tree_set {
   std::map<std::pair<int, std::vector<int>>, int> index_;
 };
 
+/// For each tree of `part` (a class set) up to all.max_order(), the index of the same tree in
+/// `all` (a two-colour set of tree_class::all): subtrees come first, so one find() per tree.
+inline std::vector<int> indices_in(const tree_set& part, const tree_set& all) {
+  std::vector<int> out;
+  for (int t = 0; t < part.first(std::min(part.max_order(), all.max_order()) + 1); ++t) {
+    std::vector<int> sons;
+    for (int u : part[t].subtrees) sons.push_back(out[static_cast<std::size_t>(u)]);
+    out.push_back(all.find(part[t].colour, std::move(sons)));
+  }
+  return out;
+}
+
 }  // namespace geomint::analysis::bseries
