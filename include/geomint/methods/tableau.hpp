@@ -176,11 +176,11 @@ struct tableau_data {
 
 namespace detail {
 template <class K, int S>
-std::vector<K> to_vector(const stage_vector<K, S>& x) {
+constexpr std::vector<K> to_vector(const stage_vector<K, S>& x) {
   return std::vector<K>(x.begin(), x.end());
 }
 template <class K, int S>
-std::vector<std::vector<K>> to_vector(const stage_matrix<K, S>& x) {
+constexpr std::vector<std::vector<K>> to_vector(const stage_matrix<K, S>& x) {
   std::vector<std::vector<K>> out;
   for (const auto& row : x) out.emplace_back(row.begin(), row.end());
   return out;

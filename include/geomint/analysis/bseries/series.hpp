@@ -14,6 +14,9 @@
 /// The tableaux are those the integrator runs (geomint::methods::tableau_data, methods/tableau.hpp).
 /// The coefficient type T is a template parameter (exact: boost::multiprecision::cpp_rational, or
 /// methods::field_element for Q(r)); only +, *, /, == and construction from int are used.
+/// Every function is constexpr: with geomint::rational (core/rational.hpp, whose overflow is a
+/// compile error in a constant expression) the coefficients of a constexpr tableau
+/// (methods::make_rk, make_prk) are exact at compile time; see tests/analysis/test_bseries_static.cpp.
 
 #include <stdexcept>
 #include <string>
@@ -29,7 +32,7 @@ using methods::tableau_data;
 /// The partitioned pair (first on colour 0, second on colour 1) of two Runge-Kutta tableaux of
 /// the same number of stages, as one `prk` tableau (c from the first).
 template <class T>
-tableau_data<T> pair_of(const tableau_data<T>& first, const tableau_data<T>& second) {
+constexpr tableau_data<T> pair_of(const tableau_data<T>& first, const tableau_data<T>& second) {
   if (first.kind != methods::method_kind::rk || second.kind != methods::method_kind::rk)
     throw std::invalid_argument("geomint::analysis::bseries::pair_of: both parts must be Runge-Kutta tableaux");
   tableau_data<T> d = first;
@@ -48,21 +51,25 @@ struct weights_of_colour {
 };
 
 template <class T>
-void check_tableau(const weights_of_colour<T>& m, std::size_t stages, std::size_t c_size, const char* which) {
-  const std::string name = std::string("geomint::analysis::bseries: the ") + which + " tableau ";
-  if (m.b->empty()) throw std::invalid_argument(name + "has no stages (b is empty)");
-  if (m.b->size() != stages) throw std::invalid_argument(name + "has a different number of stages than the other");
-  if (c_size != stages) throw std::invalid_argument(name + "has c of a different length than b");
-  if (m.a->size() != stages) throw std::invalid_argument(name + "has A with a number of rows different from the length of b");
+constexpr void check_tableau(const weights_of_colour<T>& m, std::size_t stages, std::size_t c_size, const char* which) {
+  // The message is built only on failure (Clang 14 cannot build a libstdc++ 12 std::string in a
+  // constant expression).
+  const auto fail = [which](const char* what) {
+    throw std::invalid_argument(std::string("geomint::analysis::bseries: the ") + which + " tableau " + what);
+  };
+  if (m.b->empty()) fail("has no stages (b is empty)");
+  if (m.b->size() != stages) fail("has a different number of stages than the other");
+  if (c_size != stages) fail("has c of a different length than b");
+  if (m.a->size() != stages) fail("has A with a number of rows different from the length of b");
   for (const auto& row : *m.a)
-    if (row.size() != stages) throw std::invalid_argument(name + "has a row of A of a length different from the length of b");
+    if (row.size() != stages) fail("has a row of A of a length different from the length of b");
 }
 
 /// Elementary weights with one (A, b) per colour (weights[colour]); with `wanted`, only for the
 /// trees it marks (a set closed under taking subtrees), zero for the others.
 template <class T>
-std::vector<T> elementary_weights(const tree_set& trees, const weights_of_colour<T>* weights,
-                                  const std::vector<bool>* wanted = nullptr) {
+constexpr std::vector<T> elementary_weights(const tree_set& trees, const weights_of_colour<T>* weights,
+                                            const std::vector<bool>* wanted = nullptr) {
   const std::size_t s = weights[0].b->size();
   const auto n = static_cast<std::size_t>(trees.size());
   // g[t][i] = g_i(t); fed[t][i] = sum_j a^{colour of t}_ij g_j(t), the factor t contributes
@@ -85,6 +92,29 @@ std::vector<T> elementary_weights(const tree_set& trees, const weights_of_colour
   }
   return phi;
 }
+
+/// The checks and the weights of elementary_weights below, on one (A, b) per colour.
+template <class T>
+constexpr std::vector<T> checked_elementary_weights(const tree_set& trees, methods::method_kind kind,
+                                                    const weights_of_colour<T>* weights, std::size_t c_size,
+                                                    const std::vector<bool>* wanted) {
+  const std::size_t stages = weights[0].b->size();
+  if (kind == methods::method_kind::rk) {
+    if (trees.colours() != 1)
+      throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: a Runge-Kutta tableau needs one-colour trees");
+    check_tableau(weights[0], stages, c_size, "Runge-Kutta");
+  } else if (kind == methods::method_kind::prk) {
+    if (trees.colours() != 2)
+      throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: a partitioned pair needs two-colour trees");
+    check_tableau(weights[0], stages, c_size, "first (colour 0)");
+    check_tableau(weights[1], stages, c_size, "second (colour 1)");
+  } else {
+    throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: an rk or prk tableau is needed (rkn and nystrom: partitioned_form_of)");
+  }
+  if (wanted && wanted->size() != static_cast<std::size_t>(trees.size()))
+    throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: `wanted` needs one entry per tree");
+  return elementary_weights(trees, weights, wanted);
+}
 }  // namespace detail
 
 /// a(t) = Phi(t) for every tree: the B-series of one step of a Runge-Kutta tableau (kind rk,
@@ -93,39 +123,33 @@ std::vector<T> elementary_weights(const tree_set& trees, const weights_of_colour
 /// bseries/partitioned_form.hpp. With `wanted` (one entry per tree, a set closed under taking
 /// subtrees), only the marked trees are computed; the others are zero.
 template <class T>
-std::vector<T> elementary_weights(const tree_set& trees, const tableau_data<T>& method,
-                                  const std::vector<bool>* wanted = nullptr) {
+constexpr std::vector<T> elementary_weights(const tree_set& trees, const tableau_data<T>& method,
+                                            const std::vector<bool>* wanted = nullptr) {
   const detail::weights_of_colour<T> weights[2] = {{&method.a, &method.b}, {&method.ahat, &method.bhat}};
-  if (method.kind == methods::method_kind::rk) {
-    if (trees.colours() != 1)
-      throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: a Runge-Kutta tableau needs one-colour trees");
-    detail::check_tableau(weights[0], method.b.size(), method.c.size(), "Runge-Kutta");
-  } else if (method.kind == methods::method_kind::prk) {
-    if (trees.colours() != 2)
-      throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: a partitioned pair needs two-colour trees");
-    detail::check_tableau(weights[0], method.b.size(), method.c.size(), "first (colour 0)");
-    detail::check_tableau(weights[1], method.b.size(), method.c.size(), "second (colour 1)");
-  } else {
-    throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: an rk or prk tableau is needed (rkn and nystrom: partitioned_form_of)");
-  }
-  if (wanted && wanted->size() != static_cast<std::size_t>(trees.size()))
-    throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: `wanted` needs one entry per tree");
-  return detail::elementary_weights(trees, weights, wanted);
+  return detail::checked_elementary_weights(trees, method.kind, weights, method.c.size(), wanted);
 }
 
-/// The same for a fixed-size methods:: tableau (rk or prk).
+/// The same for a fixed-size methods:: tableau (rk or prk). These are the compile-time entry
+/// points: they do not go through tableau_data, whose std::string name Clang 14 cannot build in a
+/// constant expression with libstdc++ 12 (GCC 12 can).
 template <class K, int S>
-std::vector<K> elementary_weights(const tree_set& trees, const methods::rk<K, S>& method) {
-  return elementary_weights(trees, methods::data_of(method));
+constexpr std::vector<K> elementary_weights(const tree_set& trees, const methods::rk<K, S>& method) {
+  const std::vector<std::vector<K>> a = methods::detail::to_vector<K, S>(method.a);
+  const std::vector<K> b = methods::detail::to_vector<K, S>(method.b);
+  const detail::weights_of_colour<K> weights[2] = {{&a, &b}, {&a, &b}};
+  return detail::checked_elementary_weights(trees, methods::method_kind::rk, weights, method.c.size(), nullptr);
 }
 template <class K, int S>
-std::vector<K> elementary_weights(const tree_set& trees, const methods::prk<K, S>& method) {
-  return elementary_weights(trees, methods::data_of(method));
+constexpr std::vector<K> elementary_weights(const tree_set& trees, const methods::prk<K, S>& method) {
+  const std::vector<std::vector<K>> a = methods::detail::to_vector<K, S>(method.a), ahat = methods::detail::to_vector<K, S>(method.ahat);
+  const std::vector<K> b = methods::detail::to_vector<K, S>(method.b), bhat = methods::detail::to_vector<K, S>(method.bhat);
+  const detail::weights_of_colour<K> weights[2] = {{&a, &b}, {&ahat, &bhat}};
+  return detail::checked_elementary_weights(trees, methods::method_kind::prk, weights, method.c.size(), nullptr);
 }
 
 /// e(t) = 1/gamma(t): the B-/P-series of the exact flow (HLW section III.1.2).
 template <class T>
-std::vector<T> exact_flow_coefficients(const tree_set& trees) {
+constexpr std::vector<T> exact_flow_coefficients(const tree_set& trees) {
   std::vector<T> e;
   e.reserve(static_cast<std::size_t>(trees.size()));
   for (const rooted_tree& t : trees.trees()) e.push_back(T(1) / T(t.gamma));
@@ -135,7 +159,7 @@ std::vector<T> exact_flow_coefficients(const tree_set& trees) {
 /// a(t) - 1/gamma(t): the local error of one step per tree (the error term of tree t is
 /// h^|t| / sigma(t) (a(t) - e(t)) F(t)(y)).
 template <class T>
-std::vector<T> local_error_coefficients(const tree_set& trees, const std::vector<T>& a) {
+constexpr std::vector<T> local_error_coefficients(const tree_set& trees, const std::vector<T>& a) {
   if (a.size() != static_cast<std::size_t>(trees.size()))
     throw std::invalid_argument("geomint::analysis::bseries::local_error_coefficients: one coefficient per tree is needed");
   std::vector<T> err = exact_flow_coefficients<T>(trees);
@@ -145,7 +169,7 @@ std::vector<T> local_error_coefficients(const tree_set& trees, const std::vector
 
 /// The order of the series a: the largest p <= max_order with a(t) = 1/gamma(t) for |t| <= p.
 template <class T>
-int series_order(const tree_set& trees, const std::vector<T>& a) {
+constexpr int series_order(const tree_set& trees, const std::vector<T>& a) {
   const std::vector<T> err = local_error_coefficients(trees, a);
   for (int n = 1; n <= trees.max_order(); ++n)
     for (int t = trees.first(n); t < trees.first(n + 1); ++t)

@@ -39,10 +39,15 @@
 /// analysis/nystrom_trees.hpp), nystrom 1, 2, 6, 18, 60, 204, 730, 2664, ...; root colour 0: one
 /// at order 1, then the root-colour-1 count of the order below. Checked against their generating
 /// functions in tests/analysis/test_bseries_trees.cpp.
+///
+/// Everything here is constexpr (C++20 transient allocation): a tree_set built inside a constant
+/// expression gives its counts, sigma, gamma and cuts to static_assert
+/// (tests/analysis/test_bseries_static.cpp). Lookups are binary searches in the table itself:
+/// within an order the trees are sorted by root colour and then lexicographically by their
+/// subtree lists (the order for_each_sons generates them in).
 
 #include <algorithm>
 #include <cstdint>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -87,7 +92,7 @@ namespace detail {
 /// sigma(u)^(multiplicity), for a tree t of order n whose root has the sons `sons` (ascending
 /// indices into `trees`).
 template <class Tree>
-void set_symmetry_and_density(Tree& t, int n, const std::vector<int>& sons, const std::vector<Tree>& trees) {
+constexpr void set_symmetry_and_density(Tree& t, int n, const std::vector<int>& sons, const std::vector<Tree>& trees) {
   t.gamma = n;
   t.sigma = 1;
   std::int64_t run = 0;
@@ -104,8 +109,8 @@ void set_symmetry_and_density(Tree& t, int n, const std::vector<int>& sons, cons
 /// `remaining` and which `admissible(tree)` accepts; `sons` holds the list built so far. emit
 /// may append to `trees` (only indices below `end` are read).
 template <class Tree, class Admissible, class Emit>
-void for_each_sons(const std::vector<Tree>& trees, int end, int remaining, int from, std::vector<int>& sons,
-                   const Admissible& admissible, const Emit& emit) {
+constexpr void for_each_sons(const std::vector<Tree>& trees, int end, int remaining, int from, std::vector<int>& sons,
+                             const Admissible& admissible, const Emit& emit) {
   if (remaining == 0) {
     emit(sons);
     return;
@@ -126,41 +131,51 @@ void for_each_sons(const std::vector<Tree>& trees, int end, int remaining, int f
 class tree_set {
  public:
   /// colours: 1 for B-series (Runge-Kutta), 2 for P-series (partitioned Runge-Kutta).
-  tree_set(int max_order, int colours) : tree_set(max_order, colours, tree_class::all) {}
+  constexpr tree_set(int max_order, int colours) : tree_set(max_order, colours, tree_class::all) {}
   /// The two-coloured trees of a class (tree_class::all: the same as tree_set(max_order, 2)).
-  tree_set(int max_order, tree_class kind) : tree_set(max_order, 2, kind) {}
+  constexpr tree_set(int max_order, tree_class kind) : tree_set(max_order, 2, kind) {}
 
-  int max_order() const { return max_order_; }
-  int colours() const { return colours_; }
-  tree_class kind() const { return kind_; }
-  int size() const { return static_cast<int>(trees_.size()); }
-  const rooted_tree& operator[](int t) const { return trees_.at(static_cast<std::size_t>(t)); }
-  const std::vector<rooted_tree>& trees() const { return trees_; }
+  constexpr int max_order() const { return max_order_; }
+  constexpr int colours() const { return colours_; }
+  constexpr tree_class kind() const { return kind_; }
+  constexpr int size() const { return static_cast<int>(trees_.size()); }
+  constexpr const rooted_tree& operator[](int t) const { return trees_.at(static_cast<std::size_t>(t)); }
+  constexpr const std::vector<rooted_tree>& trees() const { return trees_; }
   /// Index of the first tree of order n (n = max_order + 1 gives size()).
-  int first(int n) const { return first_.at(static_cast<std::size_t>(n)); }
+  constexpr int first(int n) const { return first_.at(static_cast<std::size_t>(n)); }
   /// Number of trees of order n.
-  int count(int n) const { return first(n + 1) - first(n); }
+  constexpr int count(int n) const { return first(n + 1) - first(n); }
   /// Number of trees of order n whose root has the given colour.
-  int count(int n, int colour) const {
+  constexpr int count(int n, int colour) const {
     int k = 0;
     for (int t = first(n); t < first(n + 1); ++t) k += trees_[static_cast<std::size_t>(t)].colour == colour;
     return k;
   }
   /// The edge cuts of tree t (empty for a single vertex).
-  const std::vector<edge_cut>& cuts(int t) const { return cuts_.at(static_cast<std::size_t>(t)); }
+  constexpr const std::vector<edge_cut>& cuts(int t) const { return cuts_.at(static_cast<std::size_t>(t)); }
 
   /// Index of the tree with this root colour and these subtrees (any order), -1 if its order
-  /// exceeds max_order.
-  int find(int colour, std::vector<int> subtrees) const {
+  /// exceeds max_order (or a subtree index is not a tree of the set).
+  constexpr int find(int colour, std::vector<int> subtrees) const {
     std::sort(subtrees.begin(), subtrees.end());
-    const auto it = index_.find({colour, subtrees});
-    return it == index_.end() ? -1 : it->second;
+    int order = 1;
+    for (int u : subtrees) {
+      if (u < 0 || u >= size()) return -1;
+      order += trees_[static_cast<std::size_t>(u)].order;
+    }
+    if (order > max_order_) return -1;
+    // Binary search among the trees of this order, sorted by (colour, subtrees).
+    const auto begin = trees_.begin() + first(order), end = trees_.begin() + first(order + 1);
+    const auto it = std::lower_bound(begin, end, subtrees, [colour](const rooted_tree& t, const std::vector<int>& key) {
+      return t.colour != colour ? t.colour < colour : t.subtrees < key;
+    });
+    return it != end && it->colour == colour && it->subtrees == subtrees ? static_cast<int>(it - trees_.begin()) : -1;
   }
   /// The single vertex of a colour.
-  int leaf(int colour) const { return find(colour, {}); }
+  constexpr int leaf(int colour) const { return find(colour, {}); }
   /// The Butcher product u o v: v grafted as a new subtree onto the root of u (HLW section III.1;
   /// the product of the symplecticity conditions, HLW section IX.9); -1 if |u| + |v| exceeds max_order.
-  int butcher_product(int u, int v) const {
+  constexpr int butcher_product(int u, int v) const {
     if (v < 0 || v >= size()) throw std::out_of_range("geomint::analysis::bseries::tree_set::butcher_product: no tree " + std::to_string(v));
     std::vector<int> subtrees = (*this)[u].subtrees;
     subtrees.push_back(v);
@@ -168,7 +183,7 @@ class tree_set {
   }
 
  private:
-  tree_set(int max_order, int colours, tree_class kind) : max_order_(max_order), colours_(colours), kind_(kind) {
+  constexpr tree_set(int max_order, int colours, tree_class kind) : max_order_(max_order), colours_(colours), kind_(kind) {
     if (colours != 1 && colours != 2)
       throw std::invalid_argument("geomint::analysis::bseries::tree_set: colours must be 1 or 2");
     const int limit = colours == 1                  ? max_tree_order_one_colour
@@ -200,42 +215,50 @@ class tree_set {
             [&](const rooted_tree& u) { return !colour_0_sons_only || u.colour == 0; },
             [&](const std::vector<int>& sons) { append(n, colour, sons); });
       }
+      first_[static_cast<std::size_t>(n) + 1] = size();
     }
-    first_[static_cast<std::size_t>(max_order) + 1] = size();
   }
 
-  void append(int n, int colour, const std::vector<int>& subtrees) {
+  constexpr void append(int n, int colour, const std::vector<int>& subtrees) {
     rooted_tree t;
     t.order = n;
     t.colour = colour;
     t.subtrees = subtrees;
     detail::set_symmetry_and_density(t, n, subtrees, trees_);
     const int id = size();
-    index_.emplace(std::make_pair(colour, subtrees), id);
     trees_.push_back(std::move(t));
     cuts_.push_back(make_cuts(id));
   }
 
   /// The edge cuts of tree id: the edges from the root to each subtree, and the edges inside
-  /// each subtree (from that subtree's cuts).
-  std::vector<edge_cut> make_cuts(int id) const {
+  /// each subtree (from that subtree's cuts); sorted by (root part, cut part).
+  constexpr std::vector<edge_cut> make_cuts(int id) const {
     const rooted_tree& t = trees_[static_cast<std::size_t>(id)];
-    std::map<std::pair<int, int>, int> found;
+    std::vector<edge_cut> out;
+    const auto add = [&out](int root_part, int cut_part, int multiplicity) {
+      for (edge_cut& c : out)
+        if (c.root_part == root_part && c.cut_part == cut_part) {
+          c.multiplicity += multiplicity;
+          return;
+        }
+      out.push_back({root_part, cut_part, multiplicity});
+    };
     for (std::size_t i = 0; i < t.subtrees.size(); ++i) {
       if (i > 0 && t.subtrees[i] == t.subtrees[i - 1]) continue;
       const int u = t.subtrees[i];
       const int copies = static_cast<int>(std::count(t.subtrees.begin(), t.subtrees.end(), u));
       std::vector<int> rest = t.subtrees;
       rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
-      found[{find(t.colour, rest), u}] += copies;
+      add(find(t.colour, rest), u, copies);
       for (const edge_cut& inner : cuts_[static_cast<std::size_t>(u)]) {
         std::vector<int> replaced = rest;
         replaced.push_back(inner.root_part);
-        found[{find(t.colour, replaced), inner.cut_part}] += copies * inner.multiplicity;
+        add(find(t.colour, replaced), inner.cut_part, copies * inner.multiplicity);
       }
     }
-    std::vector<edge_cut> out;
-    for (const auto& [parts, multiplicity] : found) out.push_back({parts.first, parts.second, multiplicity});
+    std::sort(out.begin(), out.end(), [](const edge_cut& x, const edge_cut& y) {
+      return x.root_part != y.root_part ? x.root_part < y.root_part : x.cut_part < y.cut_part;
+    });
     return out;
   }
 
@@ -245,12 +268,11 @@ class tree_set {
   std::vector<rooted_tree> trees_;
   std::vector<std::vector<edge_cut>> cuts_;
   std::vector<int> first_;
-  std::map<std::pair<int, std::vector<int>>, int> index_;
 };
 
 /// For each tree of `part` (a class set) up to all.max_order(), the index of the same tree in
 /// `all` (a two-colour set of tree_class::all): subtrees come first, so one find() per tree.
-inline std::vector<int> indices_in(const tree_set& part, const tree_set& all) {
+constexpr std::vector<int> indices_in(const tree_set& part, const tree_set& all) {
   std::vector<int> out;
   for (int t = 0; t < part.first(std::min(part.max_order(), all.max_order()) + 1); ++t) {
     std::vector<int> sons;
