@@ -12,10 +12,12 @@
 ///   method on the s Gauss points has order 2s on q'' = F(q, q') (HNW section II.14, the
 ///   superconvergence of collocation), so every velocity-dependent Nystrom tree up to order 2s
 ///   satisfies them and some tree of order 2s + 1 does not.
+#include <algorithm>
 #include <sstream>
 #include <vector>
 
 #include "catch.hpp"
+#include "geomint/analysis/bseries/modified_equation.hpp"
 #include "geomint/analysis/bseries/rkn_series.hpp"
 #include "geomint/analysis/bseries/series.hpp"
 #include "geomint/analysis/rkn_tableau.hpp"
@@ -82,6 +84,33 @@ TEST_CASE("rkn series: LPF on Gauss-interior nodes has order 2m - 2 on F(q, q')"
 
 TEST_CASE("rkn series: the velocity stages need a collocation tableau", "[bseries]") {
   CHECK_THROWS_AS(collocation_nystrom_weights(tree_set(3, 2), geomint::trapezoidal_tableau()), std::invalid_argument);
+}
+
+TEST_CASE("rkn series: the modified field on the rkn tree class equals the full set's on its Nystrom trees", "[bseries]") {
+  // The same weights (rkn_series.hpp) and modified_field on two tree sets: all two-colour trees
+  // masked by is_nystrom_tree, and tree_class::rkn generated directly. Only the tree generation
+  // differs; the published values through the class set are checked by the CLI test
+  // geomint_cli_modified_scheme_hamiltonian (Stormer-Verlet's modified Hamiltonian, HLW IX.3).
+  const int order = 7;
+  const tree_set all(order, 2), part(order, tree_class::rkn);
+  const std::vector<bool> wanted = nystrom_trees(all);
+  const std::vector<int> same = indices_in(part, all);
+  REQUIRE(static_cast<int>(same.size()) == part.size());
+  CHECK(part.size() == static_cast<int>(std::count(wanted.begin(), wanted.end(), true)));
+  const auto check = [&](const geomint::exact_rkn_tableau& method) {
+    const auto b_all = modified_field(all, elementary_weights(all, method));
+    const auto b_part = modified_field(part, elementary_weights(part, method));
+    int nonzero = 0;
+    for (int t = 0; t < part.size(); ++t) {
+      const auto u = static_cast<std::size_t>(same[static_cast<std::size_t>(t)]);
+      REQUIRE(wanted[u]);
+      CHECK(b_part[static_cast<std::size_t>(t)] == b_all[u]);
+      nonzero += part[t].order > 1 && !(b_part[static_cast<std::size_t>(t)] == exact_rational(0));
+    }
+    CHECK(nonzero > 0);
+  };
+  check(geomint::trapezoidal_tableau());                          // Stormer-Verlet
+  check(geomint::lpf_tableau<3, geomint::gauss_interior>());
 }
 
 }  // namespace bseries_rkn_series_test

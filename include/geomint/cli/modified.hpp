@@ -57,6 +57,8 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                also the modified Hamiltonian's terms h^(|t|-1) c H(t) per free tree (rk: every\n"
     "                H; scheme, rkn, nystrom: H = |p|^2/2 + V(q); prk: H = T(p) + V(q)).\n"
     "                Trees: q/p (two colours) or y (one colour) with the children in brackets.\n"
+    "                K at most 16 (scheme, rkn), 10 (nystrom), 9 (prk; the modified Hamiltonian of\n"
+    "                two colours to 9), 14 (rk).\n"
     "With --system S (any number of degrees of freedom) it runs the method (the\n"
     "scheme's stepper or the tableau's) N steps at each tau and predicts its energy\n"
     "error from the modified field, evaluated along the numerical solution with the system's\n"
@@ -76,7 +78,10 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                of sum_j h^(p+j-1) grad E . f_{p+j}(y); CSV and maxima as for symplectic.\n"
     "                galerkin and midpoint there are the Gauss RK method on H(q, p) = p . v - L:\n"
     "                symplectic, in (q, p); trapezoidal has no prediction there\n"
-    "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); p + K at most 9\n"
+    "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); p + K at most 16 for a scheme and rkn,\n"
+    "                10 for nystrom and lpf on a Lagrangian that is not natural, 9 for prk (all\n"
+    "                two-colour trees), 14 for rk and for galerkin and midpoint on a Lagrangian that\n"
+    "                is not natural\n"
     "  --digits D    working precision 16 (default), 50 or 100\n"
     "Initial data as geomint-run (--p0 the momentum); the step monitor is on (--no-monitor turns it\n"
     "off; docs/guide/robustness.md). A failed run prints nan.\n"
@@ -150,11 +155,11 @@ inline method_series series_of(const options& o) {
     m.symplectic = symplecticity(t).symplectic;
     m.symplecticity_basis = "RKN conditions (exact)";
     const int n = needed_order(o, m.order);
-    if (n > max_tree_order_two_colours)
+    if (n > max_tree_order_rkn)
       throw cli::usage_error("--order/--terms: trees of order " + std::to_string(n) + " needed, at most " +
-                             std::to_string(max_tree_order_two_colours) + " for a scheme (order " + std::to_string(m.order) + ")");
-    m.trees = tree_set(std::max(n, 1), 2);
-    m.wanted = nystrom_trees(m.trees);
+                             std::to_string(max_tree_order_rkn) + " for a scheme (order " + std::to_string(m.order) + ")");
+    m.trees = tree_set(std::max(n, 1), tree_class::rkn);
+    m.wanted.assign(static_cast<std::size_t>(m.trees.size()), true);
     for (const exact_rational& x : elementary_weights(m.trees, t)) a.emplace_back(x);
   } else {
     methods::tableau_data<field_element> t;
@@ -175,18 +180,21 @@ inline method_series series_of(const options& o) {
       m.position_colour = 1;
     }
     const int n = needed_order(o, m.order);
-    const int limit = m.one_colour ? max_tree_order_one_colour : max_tree_order_two_colours;
+    const tree_class kind = t.kind == methods::method_kind::rkn       ? tree_class::rkn
+                            : t.kind == methods::method_kind::nystrom ? tree_class::nystrom
+                                                                      : tree_class::all;
+    const int limit = m.one_colour                ? max_tree_order_one_colour
+                      : kind == tree_class::rkn     ? max_tree_order_rkn
+                      : kind == tree_class::nystrom ? max_tree_order_nystrom
+                                                    : max_tree_order_two_colours;
     if (verdict.order_is_lower_bound && !o.system.empty())
       throw cli::usage_error("--tableau: the order is at least " + std::to_string(m.order) + " (all conditions analysed hold): "
                              "no leading term within the trees analysed");
     if (n > limit)
       throw cli::usage_error("--order/--terms: trees of order " + std::to_string(n) + " needed, at most " +
                              std::to_string(limit) + " for this tableau (order " + std::to_string(m.order) + ")");
-    m.trees = tree_set(std::max(n, 1), m.one_colour ? 1 : 2);
+    m.trees = m.one_colour ? tree_set(std::max(n, 1), 1) : tree_set(std::max(n, 1), kind);
     m.wanted.assign(static_cast<std::size_t>(m.trees.size()), true);
-    if (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom)
-      for (int i = 0; i < m.trees.size(); ++i)
-        m.wanted[static_cast<std::size_t>(i)] = is_nystrom_tree(m.trees, i, t.kind == methods::method_kind::rkn);
     a = elementary_weights(m.trees, partitioned_form_of(t), &m.wanted);
   }
   m.b = modified_field(m.trees, a);
@@ -216,7 +224,11 @@ inline method_series lagrangian_series_of(const options& o, method_series m, con
   if (o.scheme == "galerkin" || o.scheme == "midpoint") {
     const int stages = o.scheme == "midpoint" ? 1 : o.m;
     m.one_colour = true;
-    m.trees = tree_set(needed_order(o, m.order), 1);  // at most 9: series_of checked it
+    const int n = needed_order(o, m.order);
+    if (n > max_tree_order_one_colour)
+      throw cli::usage_error("--order/--terms: trees of order " + std::to_string(n) + " needed, at most " +
+                             std::to_string(max_tree_order_one_colour) + " for --scheme " + o.scheme + here);
+    m.trees = tree_set(std::max(n, 1), 1);
     m.wanted.assign(static_cast<std::size_t>(m.trees.size()), true);
     std::vector<field_element> a;
     for (const exact_rational& x : with_int<1, max_exact_stages>(stages, [&]<int M>() {
@@ -234,9 +246,14 @@ inline method_series lagrangian_series_of(const options& o, method_series m, con
       throw cli::usage_error("--tableau: " + std::string(methods::to_string(kind)) + " tableaux run on natural systems only, not" +
                              here + "; rk and nystrom tableaux run on any Lagrangian");
   } else {
+    const int n = m.trees.max_order();
+    if (n > max_tree_order_nystrom)
+      throw cli::usage_error("--order/--terms: trees of order " + std::to_string(n) + " needed, at most " +
+                             std::to_string(max_tree_order_nystrom) + here);
+    m.trees = tree_set(n, tree_class::nystrom);
+    m.wanted.assign(static_cast<std::size_t>(m.trees.size()), true);
     std::vector<field_element> a;
     for (const exact_rational& x : collocation_nystrom_weights(m.trees, exact_tableau_of(o))) a.emplace_back(x);
-    m.wanted = nystrom_trees(m.trees, false);
     m.b = modified_field(m.trees, a);
   }
   m.symplectic = false;
@@ -290,8 +307,17 @@ inline void print_series(const method_series& m, int order, bool csv) {
     std::cout << (m.hamiltonians == hamiltonian_class::natural ? " on H = |p|^2/2 + V(q)" : " on H = T(p) + V(q)")
               << ", the derivatives of H in q or p by the subtrees' root colours";
   std::cout << '\n';
+  if (!m.one_colour && order > max_tree_order_two_colours) {
+    std::cout << "  (printed to order " << max_tree_order_two_colours << " only: the free trees need all two-colour trees)\n";
+    order = max_tree_order_two_colours;
+  }
   const tree_set trees(order, m.one_colour ? 1 : 2);
-  const std::vector<field_element> b(m.b.begin(), m.b.begin() + trees.size());
+  // b on the full set: a class set's trees carried over (the others' elementary differentials
+  // vanish on the class of Hamiltonians, hamiltonian_trees leaves them out).
+  std::vector<field_element> b(static_cast<std::size_t>(trees.size()), field_element(0));
+  const std::vector<int> same = m.trees.kind() == tree_class::all ? std::vector<int>{} : indices_in(m.trees, trees);
+  for (int t = 0; t < m.trees.first(order + 1); ++t)
+    b[static_cast<std::size_t>(same.empty() ? t : same[static_cast<std::size_t>(t)])] = m.b[static_cast<std::size_t>(t)];
   std::vector<bool> marked;  // two colours: the trees whose H(t) can be non-zero on the class
   if (!m.one_colour) marked = hamiltonian_trees(trees, m.hamiltonians, m.position_colour);
   for (const auto& term : modified_hamiltonian(trees, b, m.one_colour ? nullptr : &marked))
@@ -494,13 +520,13 @@ int modified_main(List list, int argc, const char* const* argv, study_tool tool 
         o.m_given = true;
       })
       .value("--tableau", [&](const std::string& v) { o.tableau = v; })
-      .value("--order", [&](const std::string& v) { o.order = cli::parse_integer<int>("--order", v, 1, max_tree_order_one_colour); })
+      .value("--order", [&](const std::string& v) { o.order = cli::parse_integer<int>("--order", v, 1, max_tree_order_rkn); })
       .value("--system", [&](const std::string& v) { o.system = cli::parse_choice("--system", v, system_names(list)); })
       .value("--q0", [&](const std::string& v) { o.q0 = cli::parse_real_list("--q0", v, cli::real_bound::finite); })
       .value("--p0", [&](const std::string& v) { o.p0 = cli::parse_real_list("--p0", v, cli::real_bound::finite); })
       .value("--tau", [&](const std::string& v) { o.tau = cli::parse_real_list("--tau", v, cli::real_bound::positive); })
       .value("--steps", [&](const std::string& v) { o.steps = cli::parse_integer<long>("--steps", v, 1, 1'000'000L); })
-      .value("--terms", [&](const std::string& v) { o.terms = cli::parse_integer<int>("--terms", v, 1, 8); })
+      .value("--terms", [&](const std::string& v) { o.terms = cli::parse_integer<int>("--terms", v, 1, max_tree_order_rkn - 1); })
       .value("--digits", [&](const std::string& v) { o.digits = std::stoi(cli::parse_choice("--digits", v, {"16", "50", "100"})); })
       .toggle("--csv", [&] { o.csv = true; })
       .toggle("--no-monitor", [&] { o.monitor = false; });

@@ -42,14 +42,13 @@ struct error_constants {
 
 namespace detail {
 template <class K>
-error_constants<K> constants_on(const tree_set& trees, const std::vector<K>& a, const std::vector<bool>* wanted, int order) {
+error_constants<K> constants_on(const tree_set& trees, const std::vector<K>& a, int order) {
   const std::vector<K> err = local_error_coefficients(trees, a);
   error_constants<K> out;
   out.order = order;
   out.components = trees.colours();
   out.squared = out.first_squared = out.second_squared = K(0);
   for (int t = trees.first(order + 1); t < trees.first(order + 2); ++t) {
-    if (wanted && !(*wanted)[static_cast<std::size_t>(t)]) continue;
     const K coefficient = err[static_cast<std::size_t>(t)] / K(trees[t].sigma);
     const K square = coefficient * coefficient;
     (trees[t].colour == 0 ? out.first_squared : out.second_squared) += square;
@@ -62,13 +61,12 @@ error_constants<K> constants_on(const tree_set& trees, const std::vector<K>& a, 
 /// The constants of a Nystrom form (rkn, nystrom, a composition) of order p (analyse_method's).
 template <class K>
 error_constants<K> principal_error_constants(const methods::nystrom_form<K>& f, int order) {
-  if (order < 1 || order + 1 > max_tree_order_two_colours)
-    throw std::domain_error("principal_error_constants: the trees of order p + 1 must be at most " +
-                            std::to_string(max_tree_order_two_colours));
-  const tree_set trees(order + 1, 2);
-  std::vector<bool> wanted(static_cast<std::size_t>(trees.size()));
-  for (int t = 0; t < trees.size(); ++t) wanted[static_cast<std::size_t>(t)] = is_nystrom_tree(trees, t, !f.has_velocity_stages);
-  return detail::constants_on(trees, elementary_weights(trees, partitioned_form_of(f), &wanted), &wanted, order);
+  const tree_class kind = f.has_velocity_stages ? tree_class::nystrom : tree_class::rkn;
+  const int limit = kind == tree_class::rkn ? max_tree_order_rkn : max_tree_order_nystrom;
+  if (order < 1 || order + 1 > limit)
+    throw std::domain_error("principal_error_constants: the trees of order p + 1 must be at most " + std::to_string(limit));
+  const tree_set trees(order + 1, kind);  // the Nystrom trees only (trees.hpp, tree_class)
+  return detail::constants_on(trees, elementary_weights(trees, partitioned_form_of(f)), order);
 }
 
 /// The constants of a tableau of any kind of order p (analyse_method's; std::domain_error when
@@ -82,7 +80,7 @@ error_constants<K> principal_error_constants(const tableau_data<K>& t, int order
   if (order < 1 || order + 1 > limit)
     throw std::domain_error("principal_error_constants: the trees of order p + 1 must be at most " + std::to_string(limit));
   const tree_set trees(order + 1, colours);
-  return detail::constants_on(trees, elementary_weights(trees, t), nullptr, order);
+  return detail::constants_on(trees, elementary_weights(trees, t), order);
 }
 
 }  // namespace geomint::analysis::bseries

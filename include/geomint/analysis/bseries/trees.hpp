@@ -25,6 +25,21 @@
 /// A000081); two colours, per root colour, 1, 2, 7, 26, 107, 458, 2058, 9498 (OEIS A000151; the
 /// total is twice that). Both checked in tests/analysis/test_bseries_trees.cpp.
 ///
+/// Two colours can also be restricted to the trees whose elementary differentials can be
+/// nonzero for a second-order system written as q' = v (colour 0), v' = F(q, v) (colour 1):
+/// f = v is linear in v and constant in q, so a colour-0 vertex has no child or one child of
+/// colour 1; for F = F(q) (Runge-Kutta-Nystrom, velocity-free) a colour-1 vertex has colour-0
+/// children only (tree_class::rkn), for F(q, v) (Nystrom) children of either colour
+/// (tree_class::nystrom). These are the Nystrom trees of Hairer, Norsett, Wanner, Solving ODEs I,
+/// 2nd ed., section II.14 (a colour-1 vertex is fat, a colour-0 vertex meagre), the trees
+/// is_nystrom_tree (partitioned_form.hpp) selects in the full set. Each class is closed under
+/// taking subtrees and under edge cuts (both parts of a cut stay in it), so find() and cuts()
+/// work within it; the generator skips the other trees before appending them. Counts per order,
+/// root colour 1: rkn 1, 1, 2, 3, 6, 10, 20, 36, 72, 137, ... (the special Nystrom trees of
+/// analysis/nystrom_trees.hpp), nystrom 1, 2, 6, 18, 60, 204, 730, 2664, ...; root colour 0: one
+/// at order 1, then the root-colour-1 count of the order below. Checked against their generating
+/// functions in tests/analysis/test_bseries_trees.cpp.
+///
 /// Everything here is constexpr (C++20 transient allocation): a tree_set built inside a constant
 /// expression gives its counts, sigma, gamma and cuts to static_assert
 /// (tests/analysis/test_bseries_static.cpp). Lookups are binary searches in the table itself:
@@ -44,6 +59,16 @@ namespace geomint::analysis::bseries {
 /// 2 x 44 947 trees of order 9).
 inline constexpr int max_tree_order_one_colour = 14;
 inline constexpr int max_tree_order_two_colours = 9;
+
+/// Which trees a tree_set holds (see the top of the file): all, or only those with possibly
+/// nonzero elementary differentials for q' = v, v' = f(q) (rkn) or v' = F(q, v) (nystrom).
+enum class tree_class { all, rkn, nystrom };
+
+/// Largest orders of the two-colour classes (rkn: 9 240 + 4 521 trees of order 16, 27 103 in
+/// all; nystrom: 37 955 + 9 975 of order 10, 65 276 in all). Building the set at the cap takes
+/// 0.08 s and 0.13 s at -Og (nystrom at order 11 has 249 864 trees).
+inline constexpr int max_tree_order_rkn = 16;
+inline constexpr int max_tree_order_nystrom = 10;
 
 /// One tree of a tree_set.
 struct rooted_tree {
@@ -106,29 +131,13 @@ constexpr void for_each_sons(const std::vector<Tree>& trees, int end, int remain
 class tree_set {
  public:
   /// colours: 1 for B-series (Runge-Kutta), 2 for P-series (partitioned Runge-Kutta).
-  constexpr tree_set(int max_order, int colours) : max_order_(max_order), colours_(colours) {
-    if (colours != 1 && colours != 2)
-      throw std::invalid_argument("geomint::analysis::bseries::tree_set: colours must be 1 or 2");
-    const int limit = colours == 1 ? max_tree_order_one_colour : max_tree_order_two_colours;
-    if (max_order < 1 || max_order > limit)
-      throw std::invalid_argument("geomint::analysis::bseries::tree_set: max_order must be in 1.." +
-                                  std::to_string(limit) + " for " + std::to_string(colours) +
-                                  " colour(s)");
-    first_.assign(static_cast<std::size_t>(max_order) + 2, 0);
-    for (int n = 1; n <= max_order; ++n) {
-      first_[static_cast<std::size_t>(n)] = size();
-      for (int colour = 0; colour < colours; ++colour) {
-        std::vector<int> subtrees;
-        detail::for_each_sons(
-            trees_, first(n), n - 1, 0, subtrees, [](const rooted_tree&) { return true; },
-            [&](const std::vector<int>& sons) { append(n, colour, sons); });
-      }
-      first_[static_cast<std::size_t>(n) + 1] = size();
-    }
-  }
+  constexpr tree_set(int max_order, int colours) : tree_set(max_order, colours, tree_class::all) {}
+  /// The two-coloured trees of a class (tree_class::all: the same as tree_set(max_order, 2)).
+  constexpr tree_set(int max_order, tree_class kind) : tree_set(max_order, 2, kind) {}
 
   constexpr int max_order() const { return max_order_; }
   constexpr int colours() const { return colours_; }
+  constexpr tree_class kind() const { return kind_; }
   constexpr int size() const { return static_cast<int>(trees_.size()); }
   constexpr const rooted_tree& operator[](int t) const { return trees_.at(static_cast<std::size_t>(t)); }
   constexpr const std::vector<rooted_tree>& trees() const { return trees_; }
@@ -174,6 +183,42 @@ class tree_set {
   }
 
  private:
+  constexpr tree_set(int max_order, int colours, tree_class kind) : max_order_(max_order), colours_(colours), kind_(kind) {
+    if (colours != 1 && colours != 2)
+      throw std::invalid_argument("geomint::analysis::bseries::tree_set: colours must be 1 or 2");
+    const int limit = colours == 1                  ? max_tree_order_one_colour
+                      : kind == tree_class::rkn     ? max_tree_order_rkn
+                      : kind == tree_class::nystrom ? max_tree_order_nystrom
+                                                    : max_tree_order_two_colours;
+    if (max_order < 1 || max_order > limit)
+      throw std::invalid_argument("geomint::analysis::bseries::tree_set: max_order must be in 1.." +
+                                  std::to_string(limit) + " for " + std::to_string(colours) + " colour(s)" +
+                                  (kind == tree_class::rkn       ? " (rkn class)"
+                                   : kind == tree_class::nystrom ? " (nystrom class)"
+                                                                 : ""));
+    first_.assign(static_cast<std::size_t>(max_order) + 2, 0);
+    for (int n = 1; n <= max_order; ++n) {
+      first_[static_cast<std::size_t>(n)] = size();
+      for (int colour = 0; colour < colours; ++colour) {
+        std::vector<int> subtrees;
+        if (kind != tree_class::all && colour == 0) {
+          // q' = v: the root alone or over one colour-1 tree (those of order n - 1 are in the set).
+          if (n == 1) append(n, colour, subtrees);
+          else
+            for (int u = first(n - 1); u < first(n); ++u)
+              if (trees_[static_cast<std::size_t>(u)].colour == 1) append(n, colour, {u});
+          continue;
+        }
+        const bool colour_0_sons_only = kind == tree_class::rkn && colour == 1;  // f(q): no v-argument
+        detail::for_each_sons(
+            trees_, first(n), n - 1, 0, subtrees,
+            [&](const rooted_tree& u) { return !colour_0_sons_only || u.colour == 0; },
+            [&](const std::vector<int>& sons) { append(n, colour, sons); });
+      }
+      first_[static_cast<std::size_t>(n) + 1] = size();
+    }
+  }
+
   constexpr void append(int n, int colour, const std::vector<int>& subtrees) {
     rooted_tree t;
     t.order = n;
@@ -219,9 +264,22 @@ class tree_set {
 
   int max_order_;
   int colours_;
+  tree_class kind_;
   std::vector<rooted_tree> trees_;
   std::vector<std::vector<edge_cut>> cuts_;
   std::vector<int> first_;
 };
+
+/// For each tree of `part` (a class set) up to all.max_order(), the index of the same tree in
+/// `all` (a two-colour set of tree_class::all): subtrees come first, so one find() per tree.
+constexpr std::vector<int> indices_in(const tree_set& part, const tree_set& all) {
+  std::vector<int> out;
+  for (int t = 0; t < part.first(std::min(part.max_order(), all.max_order()) + 1); ++t) {
+    std::vector<int> sons;
+    for (int u : part[t].subtrees) sons.push_back(out[static_cast<std::size_t>(u)]);
+    out.push_back(all.find(part[t].colour, std::move(sons)));
+  }
+  return out;
+}
 
 }  // namespace geomint::analysis::bseries
