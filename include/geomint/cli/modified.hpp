@@ -78,10 +78,11 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                of sum_j h^(p+j-1) grad E . f_{p+j}(y); CSV and maxima as for symplectic.\n"
     "                galerkin and midpoint there are the Gauss RK method on H(q, p) = p . v - L:\n"
     "                symplectic, in (q, p); trapezoidal has no prediction there\n"
-    "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); p + K at most 16 for a scheme and rkn,\n"
-    "                10 for nystrom and lpf on a Lagrangian that is not natural, 9 for prk (all\n"
-    "                two-colour trees), 14 for rk and for galerkin and midpoint on a Lagrangian that\n"
-    "                is not natural\n"
+    "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); with --system p + K at most 9 (the\n"
+    "                derivatives of f it evaluates); the coefficients (--order, --terms) reach order\n"
+    "                16 for a scheme and rkn, 10 for nystrom and for lpf on a Lagrangian that is not\n"
+    "                natural, 9 for prk (all two-colour trees), 14 for rk and for galerkin and\n"
+    "                midpoint on a Lagrangian that is not natural\n"
     "  --digits D    working precision 16 (default), 50 or 100\n"
     "Initial data as geomint-run (--p0 the momentum); the step monitor is on (--no-monitor turns it\n"
     "off; docs/guide/robustness.md). A failed run prints nan.\n"
@@ -142,7 +143,18 @@ inline exact_rkn_tableau exact_tableau_of(const options& o) {
 }
 
 /// The largest tree order the series needs: K of --order, p + --terms with --system.
-inline int needed_order(const options& o, int p) { return std::max(o.order, o.system.empty() ? 0 : p + o.terms); }
+/// With --system the prediction evaluates F(t) of the trees to order p + K, a vertex with j
+/// children asking for the j-th derivative of f (elementary_differentials.hpp, whose jets cost
+/// 3^j per product): at most max_derivative_order, so p + K <= max_derivative_order + 1.
+inline int needed_order(const options& o, int p) {
+  if (!o.system.empty() && p + o.terms > max_derivative_order + 1)
+    throw cli::usage_error("--terms: the prediction with --system needs derivatives of f of order " +
+                           std::to_string(p + o.terms - 1) + " for a method of order " + std::to_string(p) + " and " +
+                           std::to_string(o.terms) + " term(s); it evaluates them up to order " +
+                           std::to_string(max_derivative_order) + " (p + K at most " + std::to_string(max_derivative_order + 1) +
+                           "); without --system the coefficients go further (--order)");
+  return std::max(o.order, o.system.empty() ? 0 : p + o.terms);
+}
 
 inline method_series series_of(const options& o) {
   method_series m;
