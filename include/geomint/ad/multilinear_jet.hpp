@@ -4,7 +4,7 @@
 ///
 /// A jet holds 2^K coefficients x_S, one per subset S of {1..K} (a bitmask; S = 0 is the value),
 /// x = sum_S x_S prod_{k in S} e_k. The product is the subset convolution
-/// (xy)_S = sum_{A subset S} x_A y_{S\A} (3^K multiplications). Evaluating a function f at
+/// (xy)_S = sum_{A subset S} x_A y_{S minus A} (3^K multiplications). Evaluating a function f at
 /// y + e_1 u_1 + ... + e_K u_K gives f^(k)(y)[u_{i_1}, ..., u_{i_k}] as the coefficient of
 /// e_{i_1} ... e_{i_k}: exactly, with no truncation error (only the rounding of T). Where nested
 /// dual levels (ad/dual.hpp) need one type per order, a jet is one type for every order.
