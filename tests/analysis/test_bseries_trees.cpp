@@ -211,11 +211,11 @@ TEST_CASE("bseries trees: a class holds the trees is_nystrom_tree selects, with 
 TEST_CASE("bseries trees: bad requests are refused with a reason", "[bseries]") {
   CHECK_THROWS_AS(tree_set(0, 1), std::invalid_argument);
   CHECK_THROWS_AS(tree_set(15, 1), std::invalid_argument);
-  CHECK_THROWS_AS(tree_set(10, 2), std::invalid_argument);
+  CHECK_THROWS_AS(tree_set(11, 2), std::invalid_argument);
   CHECK_THROWS_AS(tree_set(3, 3), std::invalid_argument);
   CHECK_THROWS_AS(tree_set(17, tree_class::rkn), std::invalid_argument);
   CHECK_THROWS_AS(tree_set(11, tree_class::nystrom), std::invalid_argument);
-  CHECK_THROWS_AS(tree_set(10, tree_class::all), std::invalid_argument);
+  CHECK_THROWS_AS(tree_set(11, tree_class::all), std::invalid_argument);
   const tree_set small(2, 1);
   CHECK_THROWS_AS(small.butcher_product(0, small.size()), std::out_of_range);
   CHECK_THROWS_AS(small.butcher_product(-1, 0), std::out_of_range);

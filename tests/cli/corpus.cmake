@@ -237,9 +237,9 @@ geomint_cli_corpus(geomint-modified "give one of --scheme and --tableau" --schem
 geomint_cli_corpus(geomint-modified "--scheme must be one of" --scheme rk4 --order 3)
 geomint_cli_corpus(geomint-modified "--order K is needed without --system" --scheme midpoint)
 geomint_cli_corpus(geomint-modified "--order is out of range" --scheme midpoint --order 17)
-# With --system the prediction evaluates derivatives of f up to order 8: p + K at most 9.
-geomint_cli_corpus(geomint-modified "--terms: the prediction with --system needs derivatives of f of order 16" --scheme midpoint --system pendulum --tau 0.1 --steps 10 --terms 15)
-geomint_cli_corpus(geomint-modified "needs derivatives of f of order 9 for a method of order 2 and 8 term" --scheme midpoint --system pendulum --tau 0.1 --steps 10 --terms 8)
+# With --system the prediction needs the trees to order p + K: at most 16 for a scheme.
+geomint_cli_corpus(geomint-modified "--order/--terms: trees of order 17 needed, at most 16 for a scheme .order 2." --scheme midpoint --system pendulum --tau 0.1 --steps 10 --terms 15)
+geomint_cli_corpus(geomint-modified "--order/--terms: trees of order 17 needed, at most 16 for a scheme .order 14." --scheme lpf --nodes gauss-interior --m 8 --system pendulum --tau 0.1 --steps 10 --terms 3)
 geomint_cli_corpus(geomint-modified "--m applies to --scheme lpf and galerkin only" --scheme midpoint --m 3 --order 3)
 geomint_cli_corpus(geomint-modified "--nodes applies to --scheme lpf only" --scheme galerkin --nodes lobatto --order 3)
 geomint_cli_corpus(geomint-modified "--m must be in 2..8 for --scheme lpf" --scheme lpf --m 1 --order 3)

@@ -57,8 +57,8 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                also the modified Hamiltonian's terms h^(|t|-1) c H(t) per free tree (rk: every\n"
     "                H; scheme, rkn, nystrom: H = |p|^2/2 + V(q); prk: H = T(p) + V(q)).\n"
     "                Trees: q/p (two colours) or y (one colour) with the children in brackets.\n"
-    "                K at most 16 (scheme, rkn), 10 (nystrom), 9 (prk; the modified Hamiltonian of\n"
-    "                two colours to 9), 14 (rk).\n"
+    "                K at most 16 (scheme, rkn), 10 (nystrom; prk, and the modified Hamiltonian of\n"
+    "                two colours), 14 (rk).\n"
     "With --system S (any number of degrees of freedom) it runs the method (the\n"
     "scheme's stepper or the tableau's) N steps at each tau and predicts its energy\n"
     "error from the modified field, evaluated along the numerical solution with the system's\n"
@@ -78,10 +78,9 @@ inline std::string modified_usage(const std::string& program, const std::vector<
     "                of sum_j h^(p+j-1) grad E . f_{p+j}(y); CSV and maxima as for symplectic.\n"
     "                galerkin and midpoint there are the Gauss RK method on H(q, p) = p . v - L:\n"
     "                symplectic, in (q, p); trapezoidal has no prediction there\n"
-    "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); with --system p + K at most 9 (the\n"
-    "                derivatives of f it evaluates); the coefficients (--order, --terms) reach order\n"
+    "  --terms K     the terms f_{p+1}..f_{p+K} (default 1); the coefficients (--order, --terms) reach order\n"
     "                16 for a scheme and rkn, 10 for nystrom and for lpf on a Lagrangian that is not\n"
-    "                natural, 9 for prk (all two-colour trees), 14 for rk and for galerkin and\n"
+    "                natural, 10 for prk (all two-colour trees), 14 for rk and for galerkin and\n"
     "                midpoint on a Lagrangian that is not natural\n"
     "  --digits D    working precision 16 (default), 50 or 100\n"
     "Initial data as geomint-run (--p0 the momentum); the step monitor is on (--no-monitor turns it\n"
@@ -142,19 +141,11 @@ inline exact_rkn_tableau exact_tableau_of(const options& o) {
       o.m, [&]<int M>() { return with_node_family(o.nodes, []<class Family>() { return lpf_tableau<M, Family>(); }); });
 }
 
-/// The largest tree order the series needs: K of --order, p + --terms with --system.
-/// With --system the prediction evaluates F(t) of the trees to order p + K, a vertex with j
-/// children asking for the j-th derivative of f (elementary_differentials.hpp, whose jets cost
-/// 3^j per product): at most max_derivative_order, so p + K <= max_derivative_order + 1.
-inline int needed_order(const options& o, int p) {
-  if (!o.system.empty() && p + o.terms > max_derivative_order + 1)
-    throw cli::usage_error("--terms: the prediction with --system needs derivatives of f of order " +
-                           std::to_string(p + o.terms - 1) + " for a method of order " + std::to_string(p) + " and " +
-                           std::to_string(o.terms) + " term(s); it evaluates them up to order " +
-                           std::to_string(max_derivative_order) + " (p + K at most " + std::to_string(max_derivative_order + 1) +
-                           "); without --system the coefficients go further (--order)");
-  return std::max(o.order, o.system.empty() ? 0 : p + o.terms);
-}
+/// The largest tree order the series needs: K of --order, p + --terms with --system (the
+/// prediction evaluates F(t) of the trees to order p + K; every tree the generators accept has
+/// its derivatives evaluated, elementary_differentials.hpp). Each kind of method checks it
+/// against its tree class's cap.
+inline int needed_order(const options& o, int p) { return std::max(o.order, o.system.empty() ? 0 : p + o.terms); }
 
 inline method_series series_of(const options& o) {
   method_series m;

@@ -189,7 +189,7 @@ inline field_matrix complement(const field_matrix& a, const field_vector& b) {
 /// roots of an irreducible cubic) in its splitting field; theta = x_1 + 2 x_2 = 0.90752168...
 inline std::tuple<field_element, field_element, field_element> right_radau_4_interior() {
   poly cubic, rest;
-  divide(add(shifted_legendre(4), shifted_legendre(3), -1), {exact_rational(-1), exact_rational(1)}, cubic, rest);
+  divide(subtract(shifted_legendre(4), shifted_legendre(3)), {exact_rational(-1), exact_rational(1)}, cubic, rest);
   const splitting_field field{{163593, -911250, 2031075, -2324700, 1444275, -463050, 60025}, exact_rational(907522, 1000000)};
   const auto [x1, x2] = two_smallest_roots(cubic, field);
   const field_element sum = field_element(-cubic[2] / cubic[3]);

@@ -44,19 +44,30 @@ namespace detail {
 using poly = std::vector<exact_rational>;
 
 inline void trim(poly& p) {
-  while (!p.empty() && p.back() == 0) p.pop_back();
+  while (!p.empty() && p.back().is_zero()) p.pop_back();
 }
 inline int degree(const poly& p) { return static_cast<int>(p.size()) - 1; }
 
-inline poly add(const poly& a, const poly& b, const exact_rational& sb = 1) {
-  poly out(std::max(a.size(), b.size()), exact_rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i) out[i] += a[i];
-  for (std::size_t i = 0; i < b.size(); ++i) out[i] += sb * b[i];
-  trim(out);
-  return out;
+/// a += b (sign 1) or a -= b (sign -1), in place.
+inline void accumulate(poly& a, const poly& b, int sign) {
+  if (a.size() < b.size()) a.resize(b.size(), exact_rational(0));
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (sign < 0) a[i] -= b[i];
+    else a[i] += b[i];
+  }
+  trim(a);
+}
+inline poly add(poly a, const poly& b) {
+  accumulate(a, b, 1);
+  return a;
+}
+inline poly subtract(poly a, const poly& b) {
+  accumulate(a, b, -1);
+  return a;
 }
 inline poly multiply(const poly& a, const poly& b) {
   if (a.empty() || b.empty()) return {};
+  if (a.size() == 1 && b.size() == 1) return {a[0] * b[0]};  // rationals: the common case in series
   poly out(a.size() + b.size() - 1, exact_rational(0));
   for (std::size_t i = 0; i < a.size(); ++i)
     for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
@@ -69,9 +80,10 @@ inline void divide(const poly& a, const poly& b, poly& q, poly& rem) {
   q.assign(a.size() >= b.size() ? a.size() - b.size() + 1 : 0, exact_rational(0));
   while (!rem.empty() && rem.size() >= b.size()) {
     const std::size_t shift = rem.size() - b.size();
-    const exact_rational f = rem.back() / b.back();
+    const exact_rational f = b.back() == 1 ? rem.back() : exact_rational(rem.back() / b.back());  // field polynomials are monic
     q[shift] = f;
-    for (std::size_t i = 0; i < b.size(); ++i) rem[shift + i] -= f * b[i];
+    for (std::size_t i = 0; i + 1 < b.size(); ++i)
+      if (!b[i].is_zero()) rem[shift + i] -= f * b[i];
     rem.pop_back();  // the leading term cancels exactly
     trim(rem);
   }
@@ -313,7 +325,7 @@ class field_element {
   friend field_element operator-(const field_element& a, const field_element& b) {
     field_element out;
     out.field_ = common(a, b);
-    out.c_ = detail::add(a.c_, b.c_, -1);
+    out.c_ = detail::subtract(a.c_, b.c_);
     return out;
   }
   friend field_element operator-(const field_element& a) { return field_element() - a; }
@@ -326,8 +338,16 @@ class field_element {
   }
   /// std::domain_error for a divisor whose value is 0.
   friend field_element operator/(const field_element& a, const field_element& b) { return a * b.inverse(); }
-  field_element& operator+=(const field_element& b) { return *this = *this + b; }
-  field_element& operator-=(const field_element& b) { return *this = *this - b; }
+  field_element& operator+=(const field_element& b) {
+    field_ = common(*this, b);
+    detail::accumulate(c_, b.c_, 1);
+    return *this;
+  }
+  field_element& operator-=(const field_element& b) {
+    field_ = common(*this, b);
+    detail::accumulate(c_, b.c_, -1);
+    return *this;
+  }
   field_element& operator*=(const field_element& b) { return *this = *this * b; }
   /// Exact equality of values.
   friend bool operator==(const field_element& a, const field_element& b) { return (a - b).is_zero(); }
@@ -354,7 +374,7 @@ class field_element {
     while (detail::degree(r1) > 0) {
       detail::poly q, rem;
       detail::divide(r0, r1, q, rem);
-      detail::poly s2 = detail::add(s0, detail::multiply(q, s1), -1);
+      detail::poly s2 = detail::subtract(s0, detail::multiply(q, s1));
       r0 = std::move(r1);
       r1 = std::move(rem);
       s0 = std::move(s1);

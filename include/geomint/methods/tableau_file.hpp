@@ -69,7 +69,7 @@ struct poly_value {
     return g;
   }
   friend poly_value operator+(const poly_value& a, const poly_value& b) { return from(add(a.c, b.c)); }
-  friend poly_value operator-(const poly_value& a, const poly_value& b) { return from(add(a.c, b.c, -1)); }
+  friend poly_value operator-(const poly_value& a, const poly_value& b) { return from(subtract(a.c, b.c)); }
   friend poly_value operator*(const poly_value& a, const poly_value& b) { return from(multiply(a.c, b.c)); }
   friend poly_value operator/(const poly_value& a, const poly_value& b) {
     if (b.c.empty()) throw std::domain_error("division by zero");

@@ -522,8 +522,16 @@ class gauss_fixed_point_engine {
   Sys sys_;
   gauss_nystrom_coefficients<T, S> k_;
   mat<T, n> minv_;
-  bool unit_mass_ = minv_ == mat<T, n>::Identity();
-  bool diagonal_mass_ = minv_ == mat<T, n>(minv_.diagonal().asDiagonal());
+  /// Entry by entry (Eigen's comparison with Identity() trips GCC 12's -Wmaybe-uninitialized at
+  /// -O3 for multiprecision scalars).
+  static bool zero_off_diagonal(const mat<T, n>& m, bool unit_diagonal) {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        if (i != j ? m(i, j) != T(0) : (unit_diagonal && m(i, j) != T(1))) return false;
+    return true;
+  }
+  bool unit_mass_ = zero_off_diagonal(minv_, true);
+  bool diagonal_mass_ = zero_off_diagonal(minv_, false);
   V minv_diagonal_ = minv_.diagonal();
   /// mu transposed: mu_by_column_[j][i] = mu_ij (jacobi_combination).
   std::array<std::array<T, S>, S> mu_by_column_ = [this] {

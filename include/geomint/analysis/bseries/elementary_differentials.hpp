@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <algorithm>
 #include <type_traits>
 #include <vector>
 
@@ -39,9 +40,10 @@
 namespace geomint::analysis::bseries {
 
 /// The largest derivative order evaluated (a vertex with at most this many children): every
-/// two-colour tree the generator accepts (order 9), one-colour trees up to order 9. A bound on
-/// the 2^k coefficients of a jet, not on the types instantiated.
-inline constexpr int max_derivative_order = 8;
+/// tree the generators accept (the rkn class to order 16, the others below). Repeated children
+/// share one jet direction (directional_derivative), so the cost of a vertex is
+/// prod (m_j + 1)(m_j + 2)/2 over its distinct children of multiplicities m_j, not 3^k.
+inline constexpr int max_derivative_order = 15;
 
 namespace detail {
 /// grad V(q) of a scalar functor V at q in the scalar S, by one dual level of n directions.
@@ -57,7 +59,10 @@ vec<S, n> gradient(const Potential& potential, const vec<S, n>& q) {
 }
 }  // namespace detail
 
-/// f^(k)(y)[u_1, ..., u_k], k = u.size() <= max_derivative_order (k = 0: f(y)).
+/// f^(k)(y)[u_1, ..., u_k], k = u.size() <= max_derivative_order (k = 0: f(y)). Equal
+/// directions (the same pointer, as repeated subtrees give) are one direction of the jet with
+/// their multiplicity as its degree (ad/multilinear_jet.hpp): the coefficient of
+/// s_1^(m_1) ... s_J^(m_J) times m_1! ... m_J!.
 template <class Field, class T>
 vec<T, Field::dimension> directional_derivative(const Field& f, const vec<T, Field::dimension>& y,
                                                 const std::vector<const vec<T, Field::dimension>*>& u) {
@@ -66,17 +71,32 @@ vec<T, Field::dimension> directional_derivative(const Field& f, const vec<T, Fie
     throw std::invalid_argument("geomint::analysis::bseries::directional_derivative: derivative order " +
                                 std::to_string(u.size()) + " above " + std::to_string(max_derivative_order));
   if (u.empty()) return f.template operator()<T>(y);
+  std::vector<const vec<T, D>*> distinct;
+  std::vector<int> degrees;
+  for (const vec<T, D>* d : u) {
+    const auto same = std::find(distinct.begin(), distinct.end(), d);
+    if (same == distinct.end()) {
+      distinct.push_back(d);
+      degrees.push_back(1);
+    } else {
+      ++degrees[static_cast<std::size_t>(same - distinct.begin())];
+    }
+  }
   using S = jet<T>;
   vec<S, D> x;
-  std::vector<T> directions(u.size());
+  std::vector<T> directions(distinct.size());
   for (int i = 0; i < D; ++i) {
-    for (std::size_t k = 0; k < u.size(); ++k) directions[k] = (*u[k])[i];
-    x[i] = S::variable(y[i], directions);
+    for (std::size_t k = 0; k < distinct.size(); ++k) directions[k] = (*distinct[k])[i];
+    x[i] = S::variable(y[i], directions, degrees);
   }
   const vec<S, D> fx = f.template operator()<S>(x);
-  const std::size_t all = (std::size_t{1} << u.size()) - 1;  // the subset {e_1, ..., e_k}
+  T multiplicities(1);  // m_1! ... m_J!
+  for (int m : degrees)
+    for (int j = 2; j <= m; ++j) multiplicities *= T(j);
+  std::size_t top = 1;  // the index of s_1^(m_1) ... s_J^(m_J): the last coefficient
+  for (int m : degrees) top *= static_cast<std::size_t>(m + 1);
   vec<T, D> out;
-  for (int i = 0; i < D; ++i) out[i] = fx[i].coefficient(all);
+  for (int i = 0; i < D; ++i) out[i] = T(fx[i].coefficient(top - 1) * multiplicities);
   return out;
 }
 

@@ -36,26 +36,35 @@ constexpr std::vector<T> modified_field(const tree_set& trees, const std::vector
   // lie[t][k] = (d_b^k b)(t); it vanishes for k >= |t| (k + 1 factors b of order >= 1 each).
   std::vector<std::vector<T>> lie(n_trees);
   std::vector<T> b(n_trees);
+  std::vector<const edge_cut*> live;       // the cuts of t whose cut-off part has b != 0
+  std::vector<T> inverse_factorial{T(1)};  // 1/j!, j = 0, 1, ...
   for (std::size_t t = 0; t < n_trees; ++t) {
     const int order = trees[static_cast<int>(t)].order;
     lie[t].assign(static_cast<std::size_t>(order), T(0));
+    live.clear();
+    for (const edge_cut& cut : trees.cuts(static_cast<int>(t)))
+      if (!detail::known_zero(b[static_cast<std::size_t>(cut.cut_part)])) live.push_back(&cut);
+    T value = a[t];
     for (int k = 1; k < order; ++k) {
       T sum(0);
-      for (const edge_cut& cut : trees.cuts(static_cast<int>(t))) {
-        const auto& root_part = lie[static_cast<std::size_t>(cut.root_part)];
-        if (static_cast<std::size_t>(k - 1) < root_part.size())
-          sum += T(cut.multiplicity) * root_part[static_cast<std::size_t>(k - 1)] * b[static_cast<std::size_t>(cut.cut_part)];
+      for (const edge_cut* cut : live) {
+        const auto& root_part = lie[static_cast<std::size_t>(cut->root_part)];
+        if (static_cast<std::size_t>(k - 1) >= root_part.size() || detail::known_zero(root_part[static_cast<std::size_t>(k - 1)]))
+          continue;
+        T term = root_part[static_cast<std::size_t>(k - 1)] * b[static_cast<std::size_t>(cut->cut_part)];
+        if (cut->multiplicity != 1) term *= T(cut->multiplicity);
+        sum += term;
       }
-      lie[t][static_cast<std::size_t>(k)] = sum;
-    }
-    T value = a[t];
-    T factorial(1);
-    for (int j = 2; j <= order; ++j) {
-      factorial *= T(j);
-      value -= lie[t][static_cast<std::size_t>(j - 1)] / factorial;
+      if (!detail::known_zero(sum)) {
+        // 1/(k+1)!, formed once per order (a division of T can cost an inversion).
+        while (inverse_factorial.size() <= static_cast<std::size_t>(k + 1))
+          inverse_factorial.push_back(inverse_factorial.back() / T(static_cast<int>(inverse_factorial.size())));
+        value -= sum * inverse_factorial[static_cast<std::size_t>(k + 1)];
+      }
+      lie[t][static_cast<std::size_t>(k)] = std::move(sum);
     }
     b[t] = value;
-    lie[t][0] = value;
+    lie[t][0] = std::move(value);
   }
   return b;
 }

@@ -72,22 +72,28 @@ constexpr std::vector<T> elementary_weights(const tree_set& trees, const weights
                                             const std::vector<bool>* wanted = nullptr) {
   const std::size_t s = weights[0].b->size();
   const auto n = static_cast<std::size_t>(trees.size());
-  // g[t][i] = g_i(t); fed[t][i] = sum_j a^{colour of t}_ij g_j(t), the factor t contributes
-  // as a subtree.
-  std::vector<std::vector<T>> g(n), fed(n);
+  // g_i(t) (per tree, not kept); fed[t][i] = sum_j a^{colour of t}_ij g_j(t), the factor t
+  // contributes as a subtree.
+  std::vector<std::vector<T>> fed(n);
+  std::vector<T> g;
   std::vector<T> phi(n, T(0));
   for (std::size_t t = 0; t < n; ++t) {
     if (wanted && !(*wanted)[t]) continue;
     const rooted_tree& tree = trees[static_cast<int>(t)];
-    g[t].assign(s, T(1));
-    for (int u : tree.subtrees)
-      for (std::size_t i = 0; i < s; ++i) g[t][i] *= fed[static_cast<std::size_t>(u)][i];
+    // g_i(t) = prod over the subtrees u of fed_i(u); zero factors and zero entries of A and b
+    // are skipped (known_zero), exactly.
+    if (tree.subtrees.empty()) g.assign(s, T(1));
+    else g = fed[static_cast<std::size_t>(tree.subtrees[0])];
+    for (std::size_t k = 1; k < tree.subtrees.size(); ++k)
+      for (std::size_t i = 0; i < s; ++i)
+        if (!known_zero(g[i])) g[i] *= fed[static_cast<std::size_t>(tree.subtrees[k])][i];
     const weights_of_colour<T>& own = weights[tree.colour];
     fed[t].assign(s, T(0));
-    phi[t] = T(0);
-    for (std::size_t i = 0; i < s; ++i) {
-      for (std::size_t j = 0; j < s; ++j) fed[t][i] += (*own.a)[i][j] * g[t][j];
-      phi[t] += (*own.b)[i] * g[t][i];
+    for (std::size_t j = 0; j < s; ++j) {
+      if (known_zero(g[j])) continue;
+      for (std::size_t i = 0; i < s; ++i)
+        if (!known_zero((*own.a)[i][j])) fed[t][i] += (*own.a)[i][j] * g[j];
+      if (!known_zero((*own.b)[j])) phi[t] += (*own.b)[j] * g[j];
     }
   }
   return phi;

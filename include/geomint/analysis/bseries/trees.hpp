@@ -56,9 +56,10 @@
 namespace geomint::analysis::bseries {
 
 /// Largest orders the generator accepts (one colour: 32 973 trees of order 14; two colours:
-/// 2 x 44 947 trees of order 9).
+/// 2 x 216 598 trees of order 10, 547 404 in all, the P-series of an order-8 partitioned method
+/// to p + 2; docs/results/modified.md gives the time and memory of that analysis).
 inline constexpr int max_tree_order_one_colour = 14;
-inline constexpr int max_tree_order_two_colours = 9;
+inline constexpr int max_tree_order_two_colours = 10;
 
 /// Which trees a tree_set holds (see the top of the file): all, or only those with possibly
 /// nonzero elementary differentials for q' = v, v' = f(q) (rkn) or v' = F(q, v) (nystrom).
@@ -88,6 +89,17 @@ struct edge_cut {
 };
 
 namespace detail {
+/// Whether a series coefficient is zero by its representation: a zero field_element (Q(r)) is
+/// the empty polynomial, other types compare with 0. The series loops skip such terms, which
+/// is what makes high orders affordable: a method of order p has b(t) = 0 for 2 <= |t| <= p
+/// (and a symmetric one at every even order), so most edge cuts of the modified field's
+/// recursion contribute nothing. A false "not zero" only costs time.
+template <class T>
+constexpr bool known_zero(const T& x) {
+  if constexpr (requires { x.coefficients().empty(); }) return x.coefficients().empty();
+  else return x == T(0);
+}
+
 /// gamma(t) = |t| prod gamma(u) and sigma(t) = prod over distinct sons u of (multiplicity)!
 /// sigma(u)^(multiplicity), for a tree t of order n whose root has the sons `sons` (ascending
 /// indices into `trees`).
