@@ -35,11 +35,53 @@
 ///   g''(f,f) = -U''' T'^2, g'f'g = U'' T'' U', give the coefficients b/sigma of these four
 ///   order-3 P-trees: kick-drift-kick -1/24, -1/6, 1/12, 1/12; drift-kick-drift 1/12, 1/12,
 ///   -1/24, -1/6.
+/// - Runge-Kutta-Nystrom and Nystrom tableaux (bseries/nystrom_weights.hpp), on q' = v (colour
+///   0), v' = F (colour 1); Nystrom trees are written with q for a colour-0 and p for a colour-1
+///   vertex, p[q, q] = g''(f,f) in the pair's naming above:
+///   - Stormer-Verlet as an RKN method (velocity Verlet, HLW section I.1.4: c = (0, 1),
+///     a = [[0, 0], [1/2, 0]], bbar = (1/2, 0), b = (1/2, 1/2)): order 2, and on the rkn trees
+///     the kick-drift-kick values above, q[p[q]] (f'g'f) -1/6, p[q, q] 1/12, p[q[p]] (g'f'g) 1/12
+///     (HLW section IX.3, the same method);
+///   - two half steps of it (the composition (1/2, 1/2)): order 2 and these values times 1/4
+///     (the modified field of the step h/2 taken twice is the field of h/2, and its h^2 term
+///     scales by (1/2)^2); the composition of steps (1/2, 2/3, 5/6, -1): order 3 by HLW Theorem
+///     II.4.1 (sum gamma = 1, sum gamma^3 = (27 + 64 + 125 - 216)/216 = 0, with a symmetric
+///     base of order 2), and not 4: by the Baker-Campbell-Hausdorff formula (HLW section III.4)
+///     on steps exp(gamma h F1 + gamma^3 h^3 F3 + ...), its modified field is
+///     F1 + h^3 c [F1, F3] + O(h^4), c = +-1/2 sum_{i<j} (gamma_i gamma_j^3 - gamma_i^3 gamma_j)
+///     (the sign set by the order of the factors), and that sum is -11/18, not 0;
+///   - the DEMP RKN4(3) pair (Dormand, El-Mikkawy & Prince 1987, IMA J. Numer. Anal. 7,
+///     235-250, RKN4(3)4FM: c = (0, 1/4, 7/10, 1), a_21 = 1/32, a_31 = 7/1000, a_32 = 119/500,
+///     a_4j = bbar_j, bbar = (1/14, 8/27, 25/189, 0), b = (1/14, 32/81, 250/567, 5/54); the
+///     order-3 formula bbar = (-7/150, 67/150, 3/20, -1/20), b = (13/21, -20/27, 275/189, -1/3)):
+///     orders 4 and 3. At order 5, by hand: A c = (0, 0, 119/2000, 1/6), so p[q, q[p[q]]]
+///     (gamma 30) has sum b_i c_i (A c)_i = 250/567 7/10 119/2000 + 5/54 1/6 = 73/2160, error
+///     1/2160, and q[p[q[p[q]]]] (gamma 120) has bbar^T A c = 25/189 119/2000 = 17/2160, error
+///     -1/2160;
+///   - Nystrom's classical method (Nystrom 1925; HNW: Hairer, Norsett & Wanner, Solving ODEs I,
+///     section II.14: ap the classical RK4 matrix, a = (1/8; 1/8, 0; 0, 0, 1/2),
+///     bbar = (1, 1, 1, 0)/6, b = (1, 2, 2, 1)/6): order 4 on q'' = F(q, q') and on q'' = f(q).
+///     Its b, c and ap are those of the classical RK4 method, so at order 5 the bushy p[q, q, q, q]
+///     has sum b_i c_i^4 - 1/5 = 1/120 and the tall p[p[p[p[p]]]] has b^T Ap^3 (Ap 1) - 1/120 =
+///     -1/120 (Ap^4 = 0), as the classical method above; q[p[q, q, q]] has
+///     bbar^T c^3 - 1/20 = (1/8 + 1/8)/6 - 1/20 = -1/120. Two half steps of it (a composition of
+///     a nystrom tableau, 8 stages): order 4, and the errors of q'' = f(q) times 1/16 (HNW
+///     section II.4, Richardson extrapolation: the local error of two steps h/2 is
+///     2 C (h/2)^(p+1) + O(h^(p+2)));
+///   - the classical RK4 method written as a Nystrom method for q'' = F(q, q') (HNW section
+///     II.14: Runge-Kutta on the first-order system; methods/nystrom_form.hpp): a = A A
+///     (a_31 = 1/4, a_42 = 1/2), ap = A, bbar = b^T A = (1/6, 1/6, 1/6, 0), b: order 4, and on
+///     p[q, q, q, q] and p[p[p[p[p]]]] the errors 1/120 and -1/120 of the bushy and tall trees
+///     of the classical method above (the same sums b_i c_i^4 and b^T A^3 (A 1)).
 ///
 /// Cost: everything fits the default evaluation limits of g++ 12 (-fconstexpr-ops-limit) and
 /// clang++ 14 (-fconstexpr-steps); the largest evaluations are the one-colour trees of order 6
-/// (counts), the order-5 series of the classical method and the two-colour trees of order 4.
+/// (counts), the order-5 series of the classical method, the two-colour trees of order 4 and the
+/// order-5 series on the nystrom class (building tree_set(5, tree_class::nystrom), 115 trees,
+/// takes half of clang++ 14's default; with the series of a 4-stage tableau about 80 %, which is
+/// why the 8-stage composition is checked on F(q, q') to order 4 only).
 #include "geomint/analysis/bseries/modified_equation.hpp"
+#include "geomint/analysis/bseries/nystrom_weights.hpp"
 #include "geomint/analysis/bseries/series.hpp"
 #include "geomint/analysis/bseries/trees.hpp"
 #include "geomint/core/rational.hpp"
@@ -166,5 +208,137 @@ static_assert(kdk.f_gg == rational(-1, 24) && kdk.f_g_f == rational(-1, 6) && kd
               kdk.g_f_g == rational(1, 12));
 static_assert(dkd.f_gg == rational(1, 12) && dkd.f_g_f == rational(1, 12) && dkd.g_ff == rational(-1, 24) &&
               dkd.g_f_g == rational(-1, 6));
+
+// ---- Runge-Kutta-Nystrom and Nystrom tableaux: colour 0 = q (q' = v), colour 1 = v (v' = F) ----
+using bs::tree_class;
+/// Nystrom trees by structure: q[p[q]], p[q, q], p[q[p]] (q for colour 0, p for colour 1).
+struct nystrom_order_3 {
+  int q_p_q, p_qq, p_q_p;
+};
+constexpr nystrom_order_3 nystrom_order_3_of(const tree_set& t) {
+  const int q = t.leaf(0), p = t.leaf(1);
+  return {t.find(0, {t.find(1, {q})}), t.find(1, {q, q}), t.find(1, {t.find(0, {p})})};
+}
+struct rkn_verlet_values {
+  int order;
+  rational q_p_q, p_qq, p_q_p;  // b / sigma
+};
+template <class Method>
+constexpr rkn_verlet_values rkn_order_3_series(const Method& method) {
+  const tree_set t(3, tree_class::rkn);
+  const auto a = bs::elementary_weights(t, method);
+  const auto b = bs::modified_field(t, a);
+  const nystrom_order_3 s = nystrom_order_3_of(t);
+  const auto over_sigma = [&](int tree) { return b[static_cast<std::size_t>(tree)] / rational(t[tree].sigma); };
+  // q[p, p] (f''(g,g)) is no Nystrom tree: f = v is linear.
+  if (t.find(0, {t.leaf(1), t.leaf(1)}) != -1) return {};
+  return {bs::series_order(t, a), over_sigma(s.q_p_q), over_sigma(s.p_qq), over_sigma(s.p_q_p)};
+}
+constexpr auto velocity_verlet = methods::make_rkn<rational>({0, 1}, {{0, 0}, {half, 0}}, {half, 0}, {half, half});
+constexpr rkn_verlet_values verlet_rkn = rkn_order_3_series(velocity_verlet);
+static_assert(verlet_rkn.order == 2);
+static_assert(verlet_rkn.q_p_q == rational(-1, 6) && verlet_rkn.p_qq == rational(1, 12) && verlet_rkn.p_q_p == rational(1, 12));
+static_assert(verlet_rkn.q_p_q == kdk.f_g_f && verlet_rkn.p_qq == kdk.g_ff && verlet_rkn.p_q_p == kdk.g_f_g);
+
+// ---- compositions of Stormer-Verlet ----
+constexpr methods::composition<methods::rkn<rational, 2>, 2> verlet_halves{velocity_verlet, {half, half}};
+constexpr rkn_verlet_values halves = rkn_order_3_series(verlet_halves);
+static_assert(halves.order == 2);
+static_assert(halves.q_p_q == rational(-1, 24) && halves.p_qq == rational(1, 48) && halves.p_q_p == rational(1, 48));
+constexpr methods::composition<methods::rkn<rational, 2>, 4> order_3_composition{
+    velocity_verlet, {half, rational(2, 3), rational(5, 6), rational(-1)}};
+constexpr int order_3_composition_order() {
+  const tree_set t(5, tree_class::rkn);
+  return bs::series_order(t, bs::elementary_weights(t, order_3_composition));
+}
+static_assert(order_3_composition_order() == 3);
+
+// ---- DEMP RKN4(3) ----
+constexpr auto demp4 = methods::make_rkn<rational>(
+    {0, rational(1, 4), rational(7, 10), 1},
+    {{0, 0, 0, 0}, {rational(1, 32), 0, 0, 0}, {rational(7, 1000), rational(119, 500), 0, 0},
+     {rational(1, 14), rational(8, 27), rational(25, 189), 0}},
+    {rational(1, 14), rational(8, 27), rational(25, 189), 0}, {rational(1, 14), rational(32, 81), rational(250, 567), rational(5, 54)});
+/// The order-3 formula of the pair: the same c and a, other weights.
+constexpr methods::rkn<rational, 4> demp3{demp4.c, demp4.a,
+                                          {rational(-7, 150), rational(67, 150), rational(3, 20), rational(-1, 20)},
+                                          {rational(13, 21), rational(-20, 27), rational(275, 189), rational(-1, 3)}};
+struct demp_values {
+  int order, embedded_order;
+  rational p_q_q_p_q, q_p_q_p_q;  // local errors of p[q, q[p[q]]] and q[p[q[p[q]]]]
+};
+constexpr demp_values demp_series() {
+  const tree_set t(5, tree_class::rkn);
+  const auto a = bs::elementary_weights(t, demp4);
+  const auto err = bs::local_error_coefficients(t, a);
+  const int q = t.leaf(0), q_p_q = t.find(0, {t.find(1, {q})});
+  return {bs::series_order(t, a), bs::series_order(t, bs::elementary_weights(t, demp3)),
+          err[static_cast<std::size_t>(t.find(1, {q, q_p_q}))], err[static_cast<std::size_t>(t.find(0, {t.find(1, {q_p_q})}))]};
+}
+constexpr demp_values demp = demp_series();
+static_assert(demp.order == 4 && demp.embedded_order == 3);
+static_assert(demp.p_q_q_p_q == rational(1, 2160) && demp.q_p_q_p_q == rational(-1, 2160));
+
+// ---- Nystrom's classical method, and RK4 as a Nystrom method ----
+constexpr rational sixth(1, 6);
+constexpr rational rk4_a[4][4] = {{0, 0, 0, 0}, {half, 0, 0, 0}, {0, half, 0, 0}, {0, 0, 1, 0}};
+constexpr rational rk4_b[4] = {sixth, rational(1, 3), rational(1, 3), sixth};
+constexpr auto nystrom4 = methods::make_nystrom<rational>(
+    {0, half, half, 1}, {{0, 0, 0, 0}, {rational(1, 8), 0, 0, 0}, {rational(1, 8), 0, 0, 0}, {0, 0, half, 0}}, rk4_a,
+    {sixth, sixth, sixth, 0}, rk4_b);
+constexpr auto rk4_as_nystrom = methods::make_nystrom<rational>(
+    {0, half, half, 1}, {{0, 0, 0, 0}, {0, 0, 0, 0}, {rational(1, 4), 0, 0, 0}, {0, half, 0, 0}}, rk4_a, {sixth, sixth, sixth, 0},
+    rk4_b);
+struct nystrom_values {
+  int order;
+  rational bushy_error, tall_error;  // p[q, q, q, q] and p[p[p[p[p]]]]
+};
+/// On the trees of q'' = F(q, q') to order 5.
+template <class Method>
+constexpr nystrom_values nystrom_series(const Method& method) {
+  const tree_set t(5, tree_class::nystrom);
+  const auto a = bs::elementary_weights(t, method);
+  const auto err = bs::local_error_coefficients(t, a);
+  const int q = t.leaf(0);
+  int tall = t.leaf(1);
+  for (int k = 1; k < 5; ++k) tall = t.find(1, {tall});
+  return {bs::series_order(t, a), err[static_cast<std::size_t>(t.find(1, {q, q, q, q}))], err[static_cast<std::size_t>(tall)]};
+}
+struct velocity_free_values {
+  int order;
+  rational bushy_error, q_p_qqq_error;  // p[q, q, q, q] and q[p[q, q, q]]
+};
+/// On the trees of q'' = f(q) to order 5.
+template <class Method>
+constexpr velocity_free_values velocity_free_series(const Method& method) {
+  const tree_set t(5, tree_class::rkn);
+  const auto a = bs::elementary_weights(t, method);
+  const auto err = bs::local_error_coefficients(t, a);
+  const int q = t.leaf(0);
+  return {bs::series_order(t, a), err[static_cast<std::size_t>(t.find(1, {q, q, q, q}))],
+          err[static_cast<std::size_t>(t.find(0, {t.find(1, {q, q, q})}))]};
+}
+constexpr nystrom_values nystrom4_values = nystrom_series(nystrom4);
+static_assert(nystrom4_values.order == 4);
+static_assert(nystrom4_values.bushy_error == rational(1, 120) && nystrom4_values.tall_error == rational(-1, 120));
+constexpr velocity_free_values nystrom4_velocity_free = velocity_free_series(nystrom4);
+static_assert(nystrom4_velocity_free.order == 4);
+static_assert(nystrom4_velocity_free.bushy_error == rational(1, 120) && nystrom4_velocity_free.q_p_qqq_error == rational(-1, 120));
+// Two half steps (8 stages; on F(q, q') to order 4 only, to stay within clang++ 14's default
+// evaluation limit).
+constexpr methods::composition<methods::nystrom<rational, 4>, 2> nystrom4_halves{nystrom4, {half, half}};
+constexpr int nystrom4_halves_order() {
+  const tree_set t(4, tree_class::nystrom);
+  return bs::series_order(t, bs::elementary_weights(t, nystrom4_halves));
+}
+static_assert(nystrom4_halves_order() == 4);
+constexpr velocity_free_values nystrom4_halves_velocity_free = velocity_free_series(nystrom4_halves);
+static_assert(nystrom4_halves_velocity_free.order == 4);
+static_assert(nystrom4_halves_velocity_free.bushy_error == rational(1, 1920) &&
+              nystrom4_halves_velocity_free.q_p_qqq_error == rational(-1, 1920));
+// RK4 on the first-order system: on these two trees the classical method's own weights.
+constexpr nystrom_values rk4_as_nystrom_values = nystrom_series(rk4_as_nystrom);
+static_assert(rk4_as_nystrom_values.order == 4);
+static_assert(rk4_as_nystrom_values.bushy_error == rational(1, 120) && rk4_as_nystrom_values.tall_error == rational(-1, 120));
 
 }  // namespace

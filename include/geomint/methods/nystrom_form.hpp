@@ -169,10 +169,8 @@ nystrom_form<typename Tableau::coefficient> nystrom_form_of(const Tableau& t) {
   return nystrom_form_of(data_of(t));
 }
 
-/// The steps gamma_1 h .. gamma_k h of `base` as one form (see the top of the file). With
-/// sub-step l starting at (q_l, v_l), G_l = gamma_1 + ... + gamma_{l-1}:
-///   v_l = v + h sum_{m<l} gamma_m sum_j b_j F_mj,
-///   q_l = q + d G_l h v + h^2 sum_{m<l} (gamma_m^2 bbar_j + d gamma_m (G_l - G_{m+1}) b_j) F_mj.
+/// The steps gamma_1 h .. gamma_k h of `base` as one form: the stages of all sub-steps, coupled
+/// through the sub-steps' start values (detail::compose_coefficients, methods/composition.hpp).
 template <class K>
 nystrom_form<K> compose(const nystrom_form<K>& base, const std::vector<K>& gamma) {
   const int s = base.stages, k = static_cast<int>(gamma.size());
@@ -183,42 +181,13 @@ nystrom_form<K> compose(const nystrom_form<K>& base, const std::vector<K>& gamma
   f.stages = s * k;
   f.has_velocity_stages = base.has_velocity_stages;
   f.natural_only = base.natural_only;
+  const auto n = static_cast<std::size_t>(f.stages);
+  f.c.assign(n, K(0));
+  f.bbar.assign(n, K(0));
+  f.b.assign(n, K(0));
   f.a = detail::zero_matrix<K>(f.stages);
   f.ap = detail::zero_matrix<K>(f.stages);
-  std::vector<K> G(static_cast<std::size_t>(k) + 1, K(0));
-  for (int l = 0; l < k; ++l) G[static_cast<std::size_t>(l) + 1] = G[static_cast<std::size_t>(l)] + gamma[static_cast<std::size_t>(l)];
-  // The coefficient of h^2 F_mj in q_l (m < l).
-  auto in_position = [&](int l, int m, int j) {
-    const K& g = gamma[static_cast<std::size_t>(m)];
-    return K(g * g * base.bbar[static_cast<std::size_t>(j)] +
-             base.d * g * (G[static_cast<std::size_t>(l)] - G[static_cast<std::size_t>(m) + 1]) * base.b[static_cast<std::size_t>(j)]);
-  };
-  for (int l = 0; l < k; ++l) {
-    const K& gl = gamma[static_cast<std::size_t>(l)];
-    for (int i = 0; i < s; ++i) {
-      const auto row = static_cast<std::size_t>(l * s + i);
-      const K& ci = base.c[static_cast<std::size_t>(i)];
-      f.c.push_back(base.d * G[static_cast<std::size_t>(l)] + ci * gl);
-      for (int m = 0; m < l; ++m)
-        for (int j = 0; j < s; ++j) {
-          const auto col = static_cast<std::size_t>(m * s + j);
-          const K gb = gamma[static_cast<std::size_t>(m)] * base.b[static_cast<std::size_t>(j)];
-          f.a[row][col] = in_position(l, m, j) + ci * gl * gb;
-          f.ap[row][col] = gb;
-        }
-      for (int j = 0; j < s; ++j) {
-        const auto col = static_cast<std::size_t>(l * s + j);
-        f.a[row][col] = gl * gl * base.a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
-        f.ap[row][col] = gl * base.ap[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
-      }
-    }
-  }
-  for (int m = 0; m < k; ++m)
-    for (int j = 0; j < s; ++j) {
-      f.bbar.push_back(in_position(k, m, j));
-      f.b.push_back(gamma[static_cast<std::size_t>(m)] * base.b[static_cast<std::size_t>(j)]);
-    }
-  f.d = base.d * G[static_cast<std::size_t>(k)];
+  f.d = detail::compose_coefficients(base, base.d, gamma, f);
   detail::classify(f);
   return f;
 }

@@ -26,7 +26,9 @@
 /// first-order form (is_nystrom_tree below). On the other trees (a colour-0 vertex with two
 /// children or a colour-0 child: derivatives of f(q, v) = v that vanish) the method defines no
 /// P-series coefficient;
-/// analyses of rkn and nystrom tableaux use the Nystrom trees only.
+/// analyses of rkn and nystrom tableaux use the Nystrom trees only. Not constexpr (tableau_data
+/// and nystrom_form carry a std::string name); for fixed-size tableaux nystrom_weights.hpp gives
+/// the same coefficients from the Nystrom coefficients directly, at compile time.
 
 #include <vector>
 

@@ -17,6 +17,8 @@
 /// Every function is constexpr: with geomint::rational (core/rational.hpp, whose overflow is a
 /// compile error in a constant expression) the coefficients of a constexpr tableau
 /// (methods::make_rk, make_prk) are exact at compile time; see tests/analysis/test_bseries_static.cpp.
+/// Fixed-size rkn and nystrom tableaux and their compositions: nystrom_weights.hpp (constexpr
+/// too); their run-time data (tableau_data, nystrom_form): partitioned_form.hpp.
 
 #include <stdexcept>
 #include <string>
