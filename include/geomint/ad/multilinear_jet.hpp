@@ -108,7 +108,7 @@ class small_buffer {
       for (std::size_t i = 0; i < size_; ++i) small_[i] = o.small_[i];
   }
   std::size_t size_ = 0;
-  std::array<T, N> small_;  // (values beyond size_ are never read)
+  std::array<T, N> small_{};  // (values beyond size_ are never read; zeroed for GCC 12's -O3 -Wmaybe-uninitialized)
   std::vector<T> large_;
 };
 }  // namespace ad::detail

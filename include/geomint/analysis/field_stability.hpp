@@ -190,7 +190,7 @@ inline methods::detail::poly rational_norm(const field_polynomial& F) {
     md::poly g;  // F(z, y)
     exact_rational power = 1;
     for (const field_element& x : F.c) {
-      g = md::add(g, x.coefficients(), power);
+      g = md::add_scaled(g, x.coefficients(), power);
       power *= exact_rational(static_cast<long>(z));
     }
     md::poly column = md::remainder(g, m);  // y^j F(z, y) mod m, j = 0..n-1

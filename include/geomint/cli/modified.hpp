@@ -17,6 +17,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "geomint/analysis/bseries/energy_prediction.hpp"
+#include "geomint/analysis/bseries/exact_series.hpp"
 #include "geomint/analysis/bseries/lagrangian_field.hpp"
 #include "geomint/analysis/bseries/lagrangian_hamiltonian.hpp"
 #include "geomint/analysis/bseries/method_analysis.hpp"
@@ -198,9 +199,10 @@ inline method_series series_of(const options& o) {
                              std::to_string(limit) + " for this tableau (order " + std::to_string(m.order) + ")");
     m.trees = m.one_colour ? tree_set(std::max(n, 1), 1) : tree_set(std::max(n, 1), kind);
     m.wanted.assign(static_cast<std::size_t>(m.trees.size()), true);
-    a = elementary_weights(m.trees, partitioned_form_of(t), &m.wanted);
+    m.b = exact_series_of(m.trees, partitioned_form_of(t), &m.wanted).b;
+    return m;
   }
-  m.b = modified_field(m.trees, a);
+  m.b = exact_modified_field(m.trees, a);
   return m;
 }
 
@@ -238,7 +240,7 @@ inline method_series lagrangian_series_of(const options& o, method_series m, con
            return collocation_rk_weights(m.trees, galerkin_tableau<M>());
          }))
       a.emplace_back(x);
-    m.b = modified_field(m.trees, a);
+    m.b = exact_modified_field(m.trees, a);
     m.symplectic = true;
     m.symplecticity_basis = "Gauss RK method on H(q, p)";
     return m;
@@ -257,7 +259,7 @@ inline method_series lagrangian_series_of(const options& o, method_series m, con
     m.wanted.assign(static_cast<std::size_t>(m.trees.size()), true);
     std::vector<field_element> a;
     for (const exact_rational& x : collocation_nystrom_weights(m.trees, exact_tableau_of(o))) a.emplace_back(x);
-    m.b = modified_field(m.trees, a);
+    m.b = exact_modified_field(m.trees, a);
   }
   m.symplectic = false;
   m.accumulated = true;

@@ -65,6 +65,13 @@ inline poly subtract(poly a, const poly& b) {
   accumulate(a, b, -1);
   return a;
 }
+/// a + s b.
+inline poly add_scaled(poly a, const poly& b, const exact_rational& s) {
+  if (a.size() < b.size()) a.resize(b.size(), exact_rational(0));
+  for (std::size_t i = 0; i < b.size(); ++i) a[i] += s * b[i];
+  trim(a);
+  return a;
+}
 inline poly multiply(const poly& a, const poly& b) {
   if (a.empty() || b.empty()) return {};
   if (a.size() == 1 && b.size() == 1) return {a[0] * b[0]};  // rationals: the common case in series

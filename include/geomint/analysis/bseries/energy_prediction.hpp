@@ -169,7 +169,10 @@ std::vector<T> predict_energy_rate(const modified_terms<T>& m, const Field& f,
   return predict_energy_rate(m, f, solution, h, [&](const vec<T, Field::dimension>& y) {
     const vec<T, Field::dimension> fy = f.template operator()<T>(y);
     vec<T, Field::dimension> g;
-    g << -fy.tail(n), fy.head(n);
+    for (int i = 0; i < n; ++i) {  // entry by entry: GCC 12 -O3 -Warray-bounds on Eigen's packets
+      g[i] = -fy[n + i];
+      g[n + i] = fy[i];
+    }
     return g;
   });
 }
