@@ -13,7 +13,14 @@
 ///   order 2 floor(m/2) (measured by geomint-order: docs/results/analysis.md);
 /// - R(tau): the LPF paper's eq. (16) and (17) (Kong & Yang 2020);
 /// - symplecticity: Suris' conditions hold for Gauss collocation and for the midpoint rule and
-///   Stormer-Verlet (Hairer, Lubich, Wanner, Geometric Numerical Integration, VI.4).
+///   Stormer-Verlet (Hairer, Lubich, Wanner, Geometric Numerical Integration, VI.4);
+/// - the P-series of the schemes' exact tableaux (bseries/rkn_series.hpp) and their modified
+///   fields: the trapezoidal VI is Stormer-Verlet (velocity form, kick-drift-kick), whose
+///   modified field at h^2 HLW section IX.3 prints (the values of tests/analysis/
+///   test_bseries_static.cpp: f'g'f -1/6, g''(f, f) 1/12, g'f'g 1/12 as b(t)/sigma(t)); the
+///   orders of the series are those of collocation theory above.
+#include "geomint/analysis/bseries/modified_equation.hpp"
+#include "geomint/analysis/bseries/rkn_series.hpp"
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/order_conditions.hpp"
 #include "geomint/analysis/scheme_structure.hpp"
@@ -240,3 +247,33 @@ static_assert(!symmetry(nystrom4).symmetric);
 // has a31 + a32 = 1/2 = c3^2/2 but a32 c2 = 1/4 != c3^3/6: stage order 2.
 static_assert(stage_order(lpf_tableau<4, gauss_lobatto>()) == 4 && stage_order(galerkin_tableau<3>()) == 3);
 static_assert(stage_order(trapezoidal_tableau()) == 2 && stage_order(nystrom4) == 2);
+
+// The P-series of the schemes at compile time (rkn trees: q' = v colour 0, v' = f(q) colour 1).
+namespace {
+namespace bs = geomint::analysis::bseries;
+using geomint::exact_number;
+using geomint::analysis::detail::fraction;
+struct verlet_values {
+  int order;
+  exact_number f_g_f, g_ff, g_f_g;  // b / sigma of q[p[q]], p[q,q], p[q[p]]
+};
+constexpr verlet_values trapezoidal_series() {
+  const bs::tree_set t(3, bs::tree_class::rkn);
+  const auto a = bs::exact_elementary_weights(t, geomint::trapezoidal_tableau());
+  const auto b = bs::modified_field(t, a);
+  const int f = t.leaf(0), g = t.leaf(1);
+  const auto over_sigma = [&](int tree) { return b[static_cast<std::size_t>(tree)] / exact_number(t[tree].sigma); };
+  return {bs::series_order(t, a), over_sigma(t.find(0, {t.find(1, {f})})), over_sigma(t.find(1, {f, f})),
+          over_sigma(t.find(1, {t.find(0, {g})}))};
+}
+constexpr verlet_values trapezoidal_values = trapezoidal_series();
+static_assert(trapezoidal_values.order == 2);
+static_assert(trapezoidal_values.f_g_f == fraction(-1, 6) && trapezoidal_values.g_ff == fraction(1, 12) &&
+              trapezoidal_values.g_f_g == fraction(1, 12));
+constexpr int series_order_of(const geomint::exact_rkn_tableau& method, int max_order) {
+  const bs::tree_set t(max_order, bs::tree_class::rkn);
+  return bs::series_order(t, bs::exact_elementary_weights(t, method));
+}
+static_assert(series_order_of(geomint::lpf_tableau<3, geomint::gauss_interior>(), 5) == 4);  // 2(m - 1)
+static_assert(series_order_of(geomint::galerkin_tableau<2>(), 5) == 4);                    // 2m
+}  // namespace

@@ -83,6 +83,10 @@ struct big_rational {
     if (b.num.is_zero()) throw std::domain_error("geomint::big_rational: division by zero");
     return big_rational(a.num * b.den(), a.den() * b.num);
   }
+  constexpr big_rational& operator+=(const big_rational& b) { return *this = *this + b; }
+  constexpr big_rational& operator-=(const big_rational& b) { return *this = *this - b; }
+  constexpr big_rational& operator*=(const big_rational& b) { return *this = *this * b; }
+  constexpr big_rational& operator/=(const big_rational& b) { return *this = *this / b; }
 
   /// Reduced form makes member-wise equality exact equality.
   friend constexpr bool operator==(const big_rational&, const big_rational&) = default;

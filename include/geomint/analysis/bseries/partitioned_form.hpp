@@ -80,7 +80,7 @@ tableau_data<K> partitioned_form_of(const tableau_data<K>& t) {
 /// colour 1 (f = v is linear in v, constant in q); for F = F(q) (velocity_free) every colour-1
 /// vertex has colour-0 children only. These are the trees of the Nystrom series (HNW section
 /// II.14, Nystrom trees).
-inline bool is_nystrom_tree(const tree_set& trees, int t, bool velocity_free) {
+constexpr bool is_nystrom_tree(const tree_set& trees, int t, bool velocity_free) {
   const rooted_tree& tree = trees[t];
   if (tree.colour == 0) {
     if (tree.subtrees.empty()) return true;

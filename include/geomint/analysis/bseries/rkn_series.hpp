@@ -53,7 +53,7 @@ inline std::vector<bool> nystrom_trees(const tree_set& trees, bool velocity_free
 
 namespace detail {
 /// Ap of a collocation tableau in the monomial basis: x^k -> x^(k+1) / (k + 1) mod N.
-inline stage_vector collocation_velocity_stages(const exact_rkn_tableau& method, const stage_vector& u) {
+constexpr stage_vector collocation_velocity_stages(const exact_rkn_tableau& method, const stage_vector& u) {
   exact_number p[max_exact_stages + 1];
   for (int k = 0; k < method.stages; ++k) p[k + 1] = u[k] * geomint::analysis::detail::fraction(1, k + 1);
   method.reduce(p, method.stages);
@@ -73,17 +73,16 @@ inline std::vector<methods::exact_rational> to_rationals(const std::vector<exact
 }
 
 /// a(t) on the Nystrom trees of F(q) (velocity_free) or of F(q, q') (Ap: the method's velocity
-/// stages), 0 on the others; exact rationals.
-inline std::vector<methods::exact_rational> nystrom_weights(const tree_set& trees, const exact_rkn_tableau& method,
-                                                            bool velocity_free) {
+/// stages), 0 on the others; exact numbers of the stage algebra (constexpr).
+constexpr std::vector<exact_number> exact_nystrom_weights(const tree_set& trees, const exact_rkn_tableau& method,
+                                                          bool velocity_free) {
   if (trees.colours() != 2)
     throw std::invalid_argument("geomint::analysis::bseries::elementary_weights: an RKN tableau needs two-colour trees");
-  const std::vector<bool> wanted = nystrom_trees(trees, velocity_free);
   const auto n = static_cast<std::size_t>(trees.size());
   std::vector<stage_vector> psi(n), fed(n);  // fed[t] = Y(t) for a colour-0 tree t
   std::vector<exact_number> a(n);
   for (std::size_t t = 0; t < n; ++t) {
-    if (!wanted[t]) continue;
+    if (!is_nystrom_tree(trees, static_cast<int>(t), velocity_free)) continue;  // (no vector<bool>: Clang 14 constexpr)
     const rooted_tree& tree = trees[static_cast<int>(t)];
     if (tree.colour == 1) {
       psi[t] = method.one;
@@ -101,9 +100,23 @@ inline std::vector<methods::exact_rational> nystrom_weights(const tree_set& tree
       a[t] = method.apply_bbar(psi[v]);
     }
   }
-  return to_rationals(a, wanted);
+  return a;
+}
+
+/// The same as exact rationals (cpp_rational).
+inline std::vector<methods::exact_rational> nystrom_weights(const tree_set& trees, const exact_rkn_tableau& method,
+                                                            bool velocity_free) {
+  return to_rationals(exact_nystrom_weights(trees, method, velocity_free), nystrom_trees(trees, velocity_free));
 }
 }  // namespace detail
+
+/// a(t) of one step of the exact RKN tableau of a library scheme on every Nystrom tree of
+/// `trees` (two colours, F = F(q)), 0 on the others, in the tableau's own exact numbers: constexpr,
+/// so the series and the modified field (modified_equation.hpp) of lpf, galerkin, midpoint and
+/// trapezoidal reach static_assert (tests/analysis/test_bseries_static.cpp).
+constexpr std::vector<exact_number> exact_elementary_weights(const tree_set& trees, const exact_rkn_tableau& method) {
+  return detail::exact_nystrom_weights(trees, method, true);
+}
 
 /// a(t) of one step of the exact RKN tableau on every Nystrom tree of `trees` (two colours,
 /// F = F(q)), 0 on the others; exact rationals.
