@@ -150,6 +150,57 @@ TEST_CASE("Forest-Ruth, Yoshida, Suzuki over Q(2^(1/3)): the interval of periodi
   }
 }
 
+/// The step matrix of the splitting drift d_0 h, kick k_1 h, drift d_1 h, ..., kick k_s h, drift d_s h.
+matrix kick_drift(const std::vector<T>& drifts, const std::vector<T>& kicks, const T& h) {
+  matrix m = drift(drifts[0] * h);
+  for (std::size_t i = 0; i < kicks.size(); ++i) m = drift(drifts[i + 1] * h) * kick(kicks[i] * h) * m;
+  return m;
+}
+
+TEST_CASE("McLachlan's SB3A over quadratic fields: the interval of periodicity of the kick-drift products", "[field_stability]") {
+  // McLachlan 1995 (SIAM J. Sci. Comput. 16, 151-168), SB3A with m = 4 and 5: the drifts as
+  // printed to 20 digits in Principia (integrators/methods.hpp, McLachlan1995SB3A4) and in
+  // Boost.Odeint (symplectic_rkn_sb3a_mclachlan.hpp), the kicks' fractions. SB3A-5's norm
+  // polynomial has a Sturm sequence beyond 3072-bit integers (the field path forms it over Q).
+  struct expected {
+    const char* name;
+    std::vector<T> drifts, kicks;
+  };
+  const T a4(T("0.18819521776883821787")), b4(T("-0.021528551102171551201"));
+  const T a5(T("0.40518861839525227722")), b5(T("-0.28714404081652408900")), c5 = T(1) / 2 - a5 - b5;
+  const T k1 = T(-3) / 73, k2 = T(17) / 59, k3 = 1 - 2 * (k1 + k2);
+  for (const expected& e : {expected{"mclachlan-sb3a-4", {a4, b4, T(2) / 3, b4, a4}, {T(1), T(-1) / 2, T(-1) / 2, T(1)}},
+                            expected{"mclachlan-sb3a-5", {a5, b5, c5, c5, b5, a5}, {k1, k2, k3, k2, k1}}}) {
+    INFO(e.name);
+    const auto t = catalogue_tableau(e.name);
+    const method_verdicts v = verdicts(t);
+    INFO(v.oscillator_reason);
+    REQUIRE(v.oscillator_in_field);
+    CHECK(v.field_oscillator.determinant_is_one);
+    CHECK(v.stability == stability_verdict::periodic);
+    REQUIRE_FALSE(v.interval.unbounded);
+    REQUIRE_FALSE(v.interval.empty);
+    // The first exit of |tr M| from [-2, 2], bisected on the printed coefficients' matrices.
+    using std::abs;
+    auto outside = [&](const T& h) {
+      const matrix m = kick_drift(e.drifts, e.kicks, h);
+      return abs(m[0] + m[3]) > T(2);
+    };
+    T lo(0);
+    const T step = T(1) / 1024;
+    while (!outside(lo + step)) lo += step;
+    T hi = lo + step;
+    for (int k = 0; k < 200; ++k) {
+      const T mid = (lo + hi) / 2;
+      (outside(mid) ? hi : lo) = mid;
+    }
+    const T tau = interval_end(v.interval);
+    CHECK(abs(tau - lo) < T(1) / T("1e16"));  // the printed drifts' 20 digits
+    CHECK(explicit_rkn_amplitude(t, tau * T(998) / 1000, 2000) < T(100));
+    CHECK(explicit_rkn_amplitude(t, tau * T(1002) / 1000, 2000) > T(1000000));
+  }
+}
+
 TEST_CASE("The field path agrees with the rational path on rational methods", "[field_stability]") {
   // Stormer-Verlet (periodic, tau* = 2) and RKN4(3)4FM (det M != 1: absolute stability, its
   // dissipation and phase lag) through field_linear_stability and the constexpr rational analysis.

@@ -206,10 +206,9 @@ inline methods::detail::poly rational_norm(const field_polynomial& F) {
   return out;
 }
 
-/// The squarefree part of N without the root 0, primitive over Z.
-inline wide_polynomial squarefree_without_zero_roots(methods::detail::poly N) {
+/// The squarefree part of N without the root 0.
+inline methods::detail::poly squarefree_without_zero_roots(methods::detail::poly N) {
   namespace md = methods::detail;
-  using boost::multiprecision::cpp_int;
   if (N.empty()) throw std::logic_error("geomint: the norm of a nonzero stability polynomial is zero");
   std::size_t k = 0;
   while (N[k] == 0) ++k;
@@ -219,6 +218,12 @@ inline wide_polynomial squarefree_without_zero_roots(methods::detail::poly N) {
   if (md::degree(h) > 2 * max_stability_degree + 2)
     throw std::domain_error("the norm of a stability polynomial over Q(r) has degree " + std::to_string(md::degree(h)) + " (at most " +
                             std::to_string(2 * max_stability_degree + 2) + ")");
+  return h;
+}
+
+/// h over Z, primitive (the polynomial of the bound, stability_interval's form).
+inline wide_polynomial primitive_integer_polynomial(const methods::detail::poly& h) {
+  using boost::multiprecision::cpp_int;
   cpp_int scale = 1;
   for (const exact_rational& x : h) scale = boost::multiprecision::lcm(scale, boost::multiprecision::denominator(x));
   wide_polynomial w;
@@ -229,13 +234,17 @@ inline wide_polynomial squarefree_without_zero_roots(methods::detail::poly N) {
 }
 
 /// The first positive sign change of F over Q(r) (F(0) != 0): the root of the squarefree norm
-/// where F's exact sign changes (see the header comment).
+/// where F's exact sign changes (see the header comment). The Sturm sequence is formed over Q
+/// (methods/number_field.hpp): a norm's remainder sequence outgrows the wide integers (McLachlan's
+/// SB3A-5 over Q(sqrt 722025967665) needs more than 3072 bits).
 inline isolated_root field_first_sign_change(const field_polynomial& F) {
-  const wide_polynomial h = squarefree_without_zero_roots(rational_norm(F));
-  isolated_root root = first_sign_change(h, methods::exact_sign(F[0]), [&](const exact_number& x) {
-    return methods::exact_sign(value_at(F, to_rational(x)));
-  });
-  if (root.found && root.low < root.high) root.below = -sign_at(h, root.high);  // h's own sign left of its simple root
+  const methods::detail::poly h = squarefree_without_zero_roots(rational_norm(F));
+  const std::vector<methods::detail::poly> sturm = methods::detail::sturm_sequence(h);
+  const wide_polynomial w = primitive_integer_polynomial(h);
+  isolated_root root = first_sign_change(
+      w, [&](const exact_number& x) { return methods::detail::sign_changes(sturm, to_rational(x)); }, methods::exact_sign(F[0]),
+      [&](const exact_number& x) { return methods::exact_sign(value_at(F, to_rational(x))); });
+  if (root.found && root.low < root.high) root.below = -sign_at(w, root.high);  // h's own sign left of its simple root
   return root;
 }
 

@@ -144,13 +144,14 @@ struct isolated_root {
 /// right of each, `sign_of_f(x)` at a rational x that is not a root of h (f has no root between
 /// two roots of h). `below` is f's sign on (0, first root). The result's polynomial is h and its
 /// bracket (low, high] holds one root of h; found = false when f keeps its sign on z > 0.
-template <class SignOfF>
-constexpr isolated_root first_sign_change(const wide_polynomial& h, int below, const SignOfF& sign_of_f) {
+/// `variations(x)` counts the sign changes of a Sturm sequence of h at x (the roots of h in
+/// (a, b] are variations(a) - variations(b)).
+template <class Variations, class SignOfF>
+constexpr isolated_root first_sign_change(const wide_polynomial& h, const Variations& variations, int below, const SignOfF& sign_of_f) {
   isolated_root out;
   out.polynomial = h;
   out.below = below;
   if (h.degree < 1) return out;
-  const sturm_sequence sturm = make_sturm_sequence(h);
   // Cauchy: every root is below 1 + max |h_k / h_n| <= 2^e.
   int top = 0;
   for (int k = 0; k < h.degree; ++k) top = std::max(top, bit_length(h[k]));
@@ -158,13 +159,13 @@ constexpr isolated_root first_sign_change(const wide_polynomial& h, int below, c
   const exact_number upper = power_of_two(e), two(2);
   exact_number lo(0);
   while (true) {
-    const int v_upper = sturm.variations(upper);
-    if (sturm.variations(lo) - v_upper == 0) return out;  // no root left: no sign change
+    const int v_upper = variations(upper);
+    if (variations(lo) - v_upper == 0) return out;  // no root left: no sign change
     exact_number a = lo, b = upper;
-    int v_a = sturm.variations(a), v_b = v_upper;
+    int v_a = variations(a), v_b = v_upper;
     while (v_a - v_b > 1) {
       const exact_number mid = (a + b) / two;
-      const int v_mid = sturm.variations(mid);
+      const int v_mid = variations(mid);
       if (v_a - v_mid >= 1) {
         b = mid;
         v_b = v_mid;
@@ -176,7 +177,7 @@ constexpr isolated_root first_sign_change(const wide_polynomial& h, int below, c
     // One root r of h in (a, b]; f has the sign `below` on (lo, r).
     if (sign_at(h, b) == 0) {  // r = b: the sign just right of it
       exact_number c = b + (b - a);
-      while (sturm.variations(b) - sturm.variations(c) > 0) c = (b + c) / two;
+      while (variations(b) - variations(c) > 0) c = (b + c) / two;
       if (sign_of_f(c) != out.below) {
         out.found = true;
         out.low = out.high = b;
@@ -190,6 +191,13 @@ constexpr isolated_root first_sign_change(const wide_polynomial& h, int below, c
     }
     lo = b;
   }
+}
+/// The same with h's Sturm sequence in wide integers (constexpr; an overflow throws).
+template <class SignOfF>
+constexpr isolated_root first_sign_change(const wide_polynomial& h, int below, const SignOfF& sign_of_f) {
+  if (h.degree < 1) return first_sign_change(h, [](const exact_number&) { return 0; }, below, sign_of_f);
+  const sturm_sequence sturm = make_sturm_sequence(h);
+  return first_sign_change(h, [&](const exact_number& x) { return sturm.variations(x); }, below, sign_of_f);
 }
 
 /// The smallest positive root of odd multiplicity of F (F(0) != 0): the first sign change of F
