@@ -241,3 +241,14 @@ static_assert(double_weights_differentiate_square<geomint::chebyshev_lobatto, 12
 static_assert(double_weights_differentiate_square<geomint::gauss_interior, 12>());
 
 }  // namespace
+
+// The Radau families' interior polynomials, exactly: Radau IIA with 3 stages has the nodes
+// (4 -+ sqrt 6)/10 and 1, Radau IA 0 and (6 -+ sqrt 6)/10 (Hairer & Wanner II, section IV.5), so
+// the interior nodes are the roots of 10 c^2 - 8 c + 1 and 10 c^2 - 12 c + 3.
+constexpr auto radau_right_3 = geomint::radau_right::interior_polynomial<rational, 4>(3);
+constexpr auto radau_left_3 = geomint::radau_left::interior_polynomial<rational, 4>(3);
+static_assert(radau_right_3[0] * rational(10) == radau_right_3[2] && radau_right_3[1] * rational(10) == radau_right_3[2] * rational(-8) &&
+              radau_right_3[3] == rational(0));
+static_assert(radau_left_3[0] * rational(10) == radau_left_3[2] * rational(3) && radau_left_3[1] * rational(10) == radau_left_3[2] * rational(-12) &&
+              radau_left_3[3] == rational(0));
+static_assert(geomint::node_family<geomint::radau_right> && !geomint::radau_right::symmetric);

@@ -41,7 +41,17 @@ TEST_CASE("dispatch: node families under their printed and their type names, '-'
   CHECK(name("chebyshev") == "chebyshev");
   CHECK(name("chebyshev_lobatto") == "chebyshev");
   CHECK(name("chebyshev-lobatto") == "chebyshev");
+  CHECK(name("radau-right") == "radau-right");
+  CHECK(name("radau_right") == "radau-right");
+  CHECK(name("radau_left") == "radau-left");
   CHECK(with_node_family("gauss_interior", []<class F>() { return std::is_same_v<F, gauss_interior>; }));
+  CHECK(with_node_family("radau-left", []<class F>() { return std::is_same_v<F, radau_left>; }));
+  // The error names every family of the one list (node_families).
+  try {
+    name("gauss");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()) == "unknown node family 'gauss' (equispaced|gauss-interior|lobatto|chebyshev|radau-right|radau-left)");
+  }
   CHECK_THROWS_AS(name("gauss"), std::invalid_argument);
   CHECK_THROWS_AS(name(""), std::invalid_argument);
   static_assert(canonical_node_family("gauss_lobatto") == gauss_lobatto::name);

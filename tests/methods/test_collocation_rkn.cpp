@@ -67,6 +67,8 @@ TEST_CASE("collocation rkn: the exact analysis' tableau on every node family (50
   check_family<8, gauss_interior>();
   check_family<6, gauss_lobatto>();
   check_family<8, chebyshev_lobatto>();
+  check_family<5, radau_right>();
+  check_family<4, radau_left>();
 }
 
 }  // namespace collocation_rkn_test

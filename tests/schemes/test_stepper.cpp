@@ -40,6 +40,7 @@ TEST_CASE("stepper: a scheme chosen by name steps exactly like the typed integra
   CHECK(by_name({"lpf", "gauss_interior", "lagrange", 4}) == typed_step<lpf<4, gauss_interior>>(q0, qdot0, tau));
   CHECK(by_name({"lpf", "gauss-interior", "lagrange", 4}) == typed_step<lpf<4, gauss_interior>>(q0, qdot0, tau));
   CHECK(by_name({"lpf", "lobatto", "bernstein", 3}) == typed_step<lpf<3, gauss_lobatto, bernstein>>(q0, qdot0, tau));
+  CHECK(by_name({"lpf", "radau-left", "lagrange", 3}) == typed_step<lpf<3, radau_left>>(q0, qdot0, tau));
   CHECK(by_name({"galerkin", "equispaced", "lagrange", 5}) == typed_step<galerkin_vi<5>>(q0, qdot0, tau));
   CHECK(by_name({"midpoint", "equispaced", "lagrange", 2}) == typed_step<midpoint_vi>(q0, qdot0, tau));
   CHECK(make_stepper<systems::kepler, double>({"lpf", "chebyshev_lobatto", "lagrange", 6})->name() ==

@@ -8,11 +8,11 @@
 
 namespace {
 
-const char* usage =
+const std::string usage = std::string(
     "usage: geomint-run [--system harmonic|pendulum|kepler|charged|circle|spherical|henon-heiles|\n"
     "                             spring-pendulum|double-pendulum|toda|outer-solar|arenstorf]\n"
-    "                   [--scheme lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin|paper23 | --tableau FILE]\n"
-    "                   [--nodes equispaced|lobatto|chebyshev|gauss-interior (or gauss_lobatto, ...)]\n"
+    "                   [--scheme lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin|paper23 | --tableau FILE]\n") +
+    "                   [--nodes " + geomint::core::detail::joined(geomint::node_family_names) + " (or gauss_lobatto, ...)]\n" +
     "                   [--basis lagrange|bernstein]\n"
     "                   [--m M (2..16)] [--tau T (> 0)] [--steps N (0..10^12)] [--every K (1..10^12)]\n"
     "                   [--q0 a[,b]] [--p0 a[,b]] [--digits 16|50|100] [--csv]\n"

@@ -7,7 +7,7 @@
 
 namespace {
 
-const char* usage =
+const std::string usage = std::string(
     "usage: geomint-order [--system S[,S...]|all] [--scheme S[,S...]|all] [--nodes F[,F...]|all]\n"
     "                     [--m M|A..B (2..8)] [--digits 16|50|100] [--steps N1,N2,... ] [--t-end T]\n"
     "                     [--threads K (1..64)] [--csv] [--no-monitor]\n"
@@ -19,8 +19,8 @@ const char* usage =
     "error, p + 1; global_order = p) and the error constant C = global error / tau^round(p).\n"
     "  systems: harmonic, pendulum, kepler, charged (all); initial data as geomint-run\n"
     "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems; kept\n"
-    "  for one release: lpf on gauss-interior takes the same steps there)\n"
-    "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n"
+    "  for one release: lpf on gauss-interior takes the same steps there)\n") +
+    "  nodes (lpf): " + geomint::cli::node_family_text() + " (all)\n" +
     "Zoo systems (zoo): henon-heiles, spring-pendulum, double-pendulum, toda, outer-solar, arenstorf,\n"
     "with every scheme (lpf-fixed-point: henon-heiles, toda, outer-solar), are studied in double\n"
     "(--digits 16, which they require); their reference flow is the Galerkin VI of degree 3\n"

@@ -6,7 +6,7 @@
 
 namespace {
 
-const char* usage =
+const std::string usage = std::string(
     "usage: geomint-symplectic [--system S[,S...]|all] [--scheme S[,S...]|all] [--nodes F[,F...]|all]\n"
     "                          [--m M|A..B (2..8)] [--digits 16|50|100] [--tau T[,T2...]] [--q0 a[,b]] [--p0 a[,b]]\n"
     "                          [--long-steps N (0..10^9)] [--long-tau T] [--threads K (1..64)] [--csv]\n"
@@ -25,8 +25,8 @@ const char* usage =
     "the defect vanishes identically (midpoint, trapezoidal, galerkin; symplectic lpf on natural).\n"
     "  systems: harmonic, pendulum, kepler, charged (all); default initial data as geomint-run\n"
     "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems; kept\n"
-    "  for one release: lpf on gauss-interior takes the same steps there)\n"
-    "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n"
+    "  for one release: lpf on gauss-interior takes the same steps there)\n") +
+    "  nodes (lpf): " + geomint::cli::node_family_text() + " (all)\n" +
     "  zoo systems: henon-heiles, spring-pendulum, double-pendulum, toda, outer-solar, arenstorf\n"
     "  (zoo) with every scheme and --digits (lpf-fixed-point: henon-heiles, toda, outer-solar).\n"
     "Error estimates (a posteriori, always printed): defect_estimate, the change of the defect when\n"

@@ -81,7 +81,7 @@ constexpr exact_rkn_tableau galerkin_tableau(const exact_number* monic_n, int s)
 template <int M, class Family = equispaced>
 constexpr exact_rkn_tableau lpf_tableau() {
   static_assert(node_family<Family>,
-                "geomint::lpf_tableau: Family must be equispaced, gauss_lobatto, chebyshev_lobatto or gauss_interior");
+                "geomint::lpf_tableau: Family must be a node family (geomint::node_family, core/nodes.hpp)");
   static_assert(M >= 2 && M <= max_exact_m, "geomint::lpf_tableau: m must be in 2..8");
   if constexpr (node_family<Family> && M >= 2 && M <= max_exact_m) {
     const auto n = analysis::detail::interior_node_polynomial<Family, M>();

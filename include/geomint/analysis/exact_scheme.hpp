@@ -247,7 +247,7 @@ constexpr exact_two_step_scheme midpoint_two_step() {
 template <int M, class Family = equispaced>
 constexpr exact_two_step_scheme exact_two_step() {
   static_assert(node_family<Family>,
-                "geomint::exact_two_step: Family must be a node family (equispaced, gauss_lobatto, ...)");
+                "geomint::exact_two_step: Family must be a node family (geomint::node_family, core/nodes.hpp)");
   static_assert(M >= 2 && M <= max_exact_m, "geomint::exact_two_step: m must be in 2..8");
   if constexpr (node_family<Family>) {
     static_assert(Family::is_rational,

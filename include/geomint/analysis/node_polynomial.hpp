@@ -49,22 +49,15 @@ constexpr exact_poly_buffer monic_from_roots(const exact_number* roots, int s) {
   return p;
 }
 
-/// The monic polynomial whose roots are the m - 1 interior nodes of a family.
+/// The monic polynomial whose roots are the m - 1 interior nodes of a family (its
+/// interior_polynomial, core/nodes.hpp).
 template <class Family, int M>
 constexpr exact_poly_buffer interior_node_polynomial() {
-  constexpr int s = M - 1;
-  if constexpr (std::is_same_v<Family, equispaced>) {
-    exact_number roots[max_exact_stages];
-    for (int i = 0; i < s; ++i) roots[i] = fraction(i + 1, M);
-    return monic_from_roots(roots, s);
-  } else if constexpr (std::is_same_v<Family, gauss_interior>) {
-    return monic_shifted_orthogonal(shifted_orthogonal_kind::legendre, s);
-  } else if constexpr (std::is_same_v<Family, gauss_lobatto>) {
-    return monic_shifted_orthogonal(shifted_orthogonal_kind::legendre_derivative, M);
-  } else {
-    static_assert(std::is_same_v<Family, chebyshev_lobatto>);
-    return monic_shifted_orthogonal(shifted_orthogonal_kind::chebyshev_u, s);
-  }
+  const auto q = Family::template interior_polynomial<exact_number, max_exact_stages + 3>(M);
+  exact_poly_buffer p;
+  for (int k = 0; k < M; ++k) p.c[k] = q[static_cast<std::size_t>(k)];
+  make_monic(p.c, M - 1);
+  return p;
 }
 
 /// Whether the monic p of degree s >= 1 has simple roots: the Euclidean remainder sequence of p

@@ -264,7 +264,7 @@ inline std::string run_usage(const std::string& program, const std::vector<std::
   const std::string pad(program.size() + 8, ' ');
   return "usage: " + program + " [--system " + comma_list(names) + "]\n" + pad +
          "[--scheme lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin | --tableau FILE]\n" + pad +
-         "[--nodes equispaced|lobatto|chebyshev|gauss-interior] [--basis lagrange|bernstein]\n" + pad +
+         "[--nodes " + core::detail::joined(node_family_names) + "] [--basis lagrange|bernstein]\n" + pad +
          "[--m M (2..16)] [--tau T (> 0)] [--steps N (0..10^12)] [--every K (1..10^12)]\n" + pad +
          "[--q0 a[,b...]] [--p0 a[,b...]] [--digits 16|50|100] [--csv]\n" + pad +
          "[--compensated] [--growth] [--estimate] [--no-monitor]\n"

@@ -145,12 +145,17 @@ struct selection {
   }
 };
 
+/// The node families' printed names, comma-separated.
+inline std::string node_family_text() {
+  return comma_list(node_family_list());
+}
+
 /// The lines of a study's usage text that name its selection over the systems `names`.
 inline std::string selection_usage(const std::vector<std::string>& names) {
   return "  systems: " + comma_list(names) + " (all); initial data as run\n"
          "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems;\n"
          "           kept for one release: lpf on gauss-interior takes its steps on natural systems)\n"
-         "  nodes (lpf): equispaced, lobatto, chebyshev, gauss-interior (all)\n";
+         "  nodes (lpf): " + node_family_text() + " (all)\n";
 }
 
 /// The width of the tables' scheme column: 13, or wider for a longer scheme name.

@@ -5,8 +5,9 @@
 /// `geomint::with_node_family("gauss_interior", [&]<class Family>() { ... })`.
 ///
 /// Names: a family is accepted under its printed name (`Family::name`: equispaced, lobatto,
-/// chebyshev, gauss-interior) and under its type name (gauss_lobatto, chebyshev_lobatto,
-/// gauss_interior), with '-' and '_' interchangeable.
+/// chebyshev, gauss-interior, radau-right, radau-left) and under its type name
+/// (`Family::type_name`: gauss_lobatto, chebyshev_lobatto, ...), with '-' and '_'
+/// interchangeable.
 
 #include <array>
 #include <optional>
@@ -19,9 +20,22 @@
 
 namespace geomint {
 
+/// A list of types (the node families).
+template <class... F>
+struct type_list {};
+
+/// Every node family (core/nodes.hpp), in the order the tools list them: the one list of them.
+using node_families = type_list<equispaced, gauss_interior, gauss_lobatto, chebyshev_lobatto, radau_right, radau_left>;
+
+namespace core::detail {
+template <class... F>
+constexpr std::array<std::string_view, sizeof...(F)> printed_names(type_list<F...>) {
+  return {F::name...};
+}
+}  // namespace core::detail
+
 /// The printed names of the node families and bases, in a fixed order.
-inline constexpr std::array<std::string_view, 4> node_family_names = {equispaced::name, gauss_interior::name,
-                                                                      gauss_lobatto::name, chebyshev_lobatto::name};
+inline constexpr auto node_family_names = core::detail::printed_names(node_families{});
 inline constexpr std::array<std::string_view, 2> basis_names = {lagrange::name, bernstein::name};
 
 namespace core::detail {
@@ -44,14 +58,29 @@ inline std::string joined(const auto& names) {
 }
 }  // namespace core::detail
 
+namespace core::detail {
+template <class... F>
+constexpr std::optional<std::string_view> canonical_in(std::string_view name, type_list<F...>) {
+  std::optional<std::string_view> out;
+  ((!out && (same_name(name, F::name) || same_name(name, F::type_name)) ? (out = F::name, true) : false), ...);
+  return out;
+}
+template <class First, class... Rest, class F>
+decltype(auto) with_family_from(std::string_view printed, F&& f) {
+  if constexpr (sizeof...(Rest) > 0) {
+    if (printed != First::name) return with_family_from<Rest...>(printed, static_cast<F&&>(f));
+  }
+  return f.template operator()<First>();
+}
+template <class... Families, class F>
+decltype(auto) with_family_in(std::string_view printed, F&& f, type_list<Families...>) {
+  return with_family_from<Families...>(printed, static_cast<F&&>(f));
+}
+}  // namespace core::detail
+
 /// The printed name of the node family called `name` (see above), or nothing.
 constexpr std::optional<std::string_view> canonical_node_family(std::string_view name) {
-  using core::detail::same_name;
-  if (same_name(name, equispaced::name)) return equispaced::name;
-  if (same_name(name, gauss_interior::name)) return gauss_interior::name;
-  if (same_name(name, gauss_lobatto::name) || same_name(name, "gauss_lobatto")) return gauss_lobatto::name;
-  if (same_name(name, chebyshev_lobatto::name) || same_name(name, "chebyshev_lobatto")) return chebyshev_lobatto::name;
-  return std::nullopt;
+  return core::detail::canonical_in(name, node_families{});
 }
 
 namespace core::detail {
@@ -78,12 +107,9 @@ decltype(auto) with_int(int value, F&& f) {
 template <class F>
 decltype(auto) with_node_family(std::string_view name, F&& f) {
   const auto family = canonical_node_family(name);
-  if (family == equispaced::name) return f.template operator()<equispaced>();
-  if (family == gauss_interior::name) return f.template operator()<gauss_interior>();
-  if (family == gauss_lobatto::name) return f.template operator()<gauss_lobatto>();
-  if (family == chebyshev_lobatto::name) return f.template operator()<chebyshev_lobatto>();
-  throw std::invalid_argument("unknown node family '" + std::string(name) + "' (" +
-                              core::detail::joined(node_family_names) + ")");
+  if (!family)
+    throw std::invalid_argument("unknown node family '" + std::string(name) + "' (" + core::detail::joined(node_family_names) + ")");
+  return core::detail::with_family_in(*family, static_cast<F&&>(f), node_families{});
 }
 
 /// `f.template operator()<Basis>()` for the basis called `name`; std::invalid_argument otherwise.

@@ -238,7 +238,7 @@ struct constrained_lpf {
   static_assert(M >= 2, "geomint::constrained_lpf: m must be >= 2 (eq. 4 needs an interior node)");
   static_assert(M <= max_floating_m, "geomint::constrained_lpf: m must be <= max_floating_m (16)");
   static_assert(node_family<Family>,
-                "geomint::constrained_lpf: Family must be equispaced, gauss_lobatto, chebyshev_lobatto or gauss_interior");
+                "geomint::constrained_lpf: Family must be a node family (geomint::node_family, core/nodes.hpp)");
   static_assert(basis_kind<Basis>, "geomint::constrained_lpf: Basis must be lagrange or bernstein");
   static constexpr int m = M;
   using family = Family;

@@ -315,7 +315,7 @@ struct lpf {
   static_assert(M >= 2, "geomint::lpf: m must be >= 2 (eq. 12 needs at least one interior node)");
   static_assert(M <= max_floating_m, "geomint::lpf: m must be <= max_floating_m (16)");
   static_assert(node_family<Family>,
-                "geomint::lpf: Family must be equispaced, gauss_lobatto, chebyshev_lobatto or gauss_interior");
+                "geomint::lpf: Family must be a node family (geomint::node_family, core/nodes.hpp)");
   static_assert(basis_kind<Basis>, "geomint::lpf: Basis must be lagrange or bernstein");
   static_assert(lpf_solver<Solver>, "geomint::lpf: Solver must be default_solver, newton_solver or fixed_point_solver");
   static_assert(!std::is_same_v<Solver, fixed_point_solver> ||
