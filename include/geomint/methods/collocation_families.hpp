@@ -42,6 +42,7 @@
 #include <utility>
 #include <vector>
 
+#include "geomint/core/nodes.hpp"
 #include "geomint/core/orthogonal_polynomials.hpp"
 #include "geomint/methods/number_field.hpp"
 #include "geomint/methods/tableau.hpp"
@@ -186,10 +187,11 @@ inline field_matrix complement(const field_matrix& a, const field_vector& b) {
 }
 
 /// The three roots below 1 of P_4(2x - 1) - P_3(2x - 1) (the right Radau nodes of s = 4, the
-/// roots of an irreducible cubic) in its splitting field; theta = x_1 + 2 x_2 = 0.90752168...
+/// roots of an irreducible cubic: radau_right's interior polynomial, core/nodes.hpp) in its
+/// splitting field; theta = x_1 + 2 x_2 = 0.90752168...
 inline std::tuple<field_element, field_element, field_element> right_radau_4_interior() {
-  poly cubic, rest;
-  divide(subtract(shifted_legendre(4), shifted_legendre(3)), {exact_rational(-1), exact_rational(1)}, cubic, rest);
+  const auto interior = radau_right::interior_polynomial<exact_rational, 4>(4);
+  const poly cubic(interior.begin(), interior.end());
   const splitting_field field{{163593, -911250, 2031075, -2324700, 1444275, -463050, 60025}, exact_rational(907522, 1000000)};
   const auto [x1, x2] = two_smallest_roots(cubic, field);
   const field_element sum = field_element(-cubic[2] / cubic[3]);
