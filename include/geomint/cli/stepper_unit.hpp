@@ -1,5 +1,5 @@
 #pragma once
-/// The definitions of the front ends' stepper factories (declared in geomint/cli/steppers.hpp),
+/// The definitions of the front ends' stepper factories (declared in geomint/cli/stepper_factories.hpp),
 /// and `stepper_unit`, whose explicit instantiation compiles them for a list of systems in one
 /// scalar: the translation units that geomint_add_tools (cmake/geomintTools.cmake) generates,
 /// one per digits (m <= 8 and tableau files) and one per digits for m = 9..16, so that a build
@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "geomint/cli/steppers.hpp"
+#include "geomint/cli/stepper_factories.hpp"
 #include "geomint/methods/tableau_stepper.hpp"
 
 namespace geomint::cli {
