@@ -97,12 +97,21 @@ class constrained_integrator {
     return s;
   }
 
+  /// Compensated summation of the positions (off by default; integrator.hpp): q_{k+1} = q_k + dq
+  /// is added with its rounding error carried in the state (phase_state::carry); the momentum is
+  /// projected onto the hidden constraint at q_{k+1} and stored as a value (its carry is 0).
+  void set_compensated_summation(bool on) { compensated_ = on; }
+  bool compensated_summation() const { return compensated_; }
+
   /// One step without throwing; on failure s is unchanged.
   step_status try_step(state& s) const {
     const step_status st = check_step_input(s.step, tau_, s.q, s.p);
     if (!st) return st;
     vector q1, p1;
-    return finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_), q1, p1, tau_, monitor_, engine_.system());
+    phase_carry<T, n> carry1 = s.carry;
+    phase_carry<T, n>* carry = compensated_ ? &carry1 : nullptr;
+    return finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, nullptr, carry), q1, p1, tau_, monitor_,
+                       engine_.system(), carry);
   }
   /// One step; throws integration_error (reason and step index) on failure.
   void step(state& s) const {
@@ -129,8 +138,10 @@ class constrained_integrator {
     typename Scheme::template engine<Sys, Con, T>::unknowns z;
     const vector q0 = s.q;
     const T t0 = s.t;
-    const step_status st =
-        finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z), q1, p1, tau_, monitor_, engine_.system());
+    phase_carry<T, n> carry1 = s.carry;
+    phase_carry<T, n>* carry = compensated_ ? &carry1 : nullptr;
+    const step_status st = finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z, carry), q1, p1, tau_, monitor_,
+                                       engine_.system(), carry);
     if (st) out = path(t0, s.t, tau_, engine_.method().path(q0, z));
     return st;
   }
@@ -171,6 +182,7 @@ class constrained_integrator {
   T tau_;
   newton_options<T> opt_;
   step_monitor<T> monitor_;
+  bool compensated_ = false;
 };
 
 }  // namespace geomint

@@ -273,3 +273,50 @@ TEST_CASE("scheme (23) as printed amplifies radial defects by 3 + 2 sqrt 2 per s
     CHECK(abs(T(ratio / expected - T(1))) < T(1) / T(100));
   }
 }
+
+TEST_CASE("constrained LPF: a compensated step from q and its carry is the step from their sum", "[constraints][compensated]") {
+  // Compensated summation (phase_state::carry): the state is q + carry.q, p + carry.p, so the
+  // path, the momentum row and the constraint rows of the step must see the carried parts.
+  // Second method: the same scheme in 50 digits from the exact sums (as for the free schemes,
+  // tests/schemes/test_conservation.cpp). The spherical pendulum from (sin, 0, -cos)(pi/4) with
+  // the velocity (0, 4/5, 0), tau = 1/20; carries of 2^-30 and 2^-31, far above the round-off, so
+  // that a step from the rounded parts alone misses by about |carry| (1e-9). The carry leaves
+  // the constraint: q + carry.q is off the sphere by about 2^-30, and the step's end condition
+  // f(q_{k+1}) = 0 puts the new point back on it, in both runs alike.
+  using R = geomint::test::cpp_bin_float_50;
+  using geomint::systems::spherical_pendulum;
+  using geomint::systems::unit_sphere;
+  using std::abs;
+  const double r = std::sqrt(0.5);
+  const vec<double, 3> q0(r, 0.0, -r), v0(0.0, 0.8, 0.0);
+  const vec<double, 3> cq(std::ldexp(1.0, -30), -std::ldexp(1.0, -30), std::ldexp(1.0, -31));
+  const vec<double, 3> cp(std::ldexp(1.0, -31), std::ldexp(1.0, -31), -std::ldexp(1.0, -30));
+  auto check = [&]<class Scheme>() {
+    geomint::constrained_integrator<Scheme, spherical_pendulum, unit_sphere, double> I({}, {}, 1.0 / 20);
+    I.set_compensated_summation(true);
+    CHECK(I.compensated_summation());
+    auto s = I.initial_state(q0, v0);
+    s.carry.q = cq;
+    s.carry.p = cp;
+    geomint::constrained_integrator<Scheme, spherical_pendulum, unit_sphere, R> J({}, {}, R(1) / R(20));
+    geomint::phase_state<R, 3> t;
+    for (int i = 0; i < 3; ++i) {
+      t.q[i] = R(s.q[i]) + R(cq[i]);
+      t.p[i] = R(s.p[i]) + R(cp[i]);
+    }
+    REQUIRE(I.try_step(s));
+    REQUIRE(J.try_step(t));
+    R gap_q(0), gap_p(0);
+    for (int i = 0; i < 3; ++i) {
+      gap_q = std::max(gap_q, R(abs(R(R(s.q[i]) + R(s.carry.q[i])) - t.q[i])));
+      gap_p = std::max(gap_p, R(abs(R(R(s.p[i]) + R(s.carry.p[i])) - t.p[i])));
+    }
+    const R eps = R(std::numeric_limits<double>::epsilon());
+    INFO(Scheme::name() << ": |q - q_50| = " << gap_q << ", |p - p_50| = " << gap_p);
+    CHECK(gap_q <= R(16) * eps);
+    CHECK(gap_p <= R(64) * eps);  // p = dL/dqdot at the path's end, projected (as for general LPF)
+    CHECK((s.carry.p.array() == 0.0).all());  // the projected momentum is a value
+  };
+  check.template operator()<geomint::constrained_lpf<2>>();
+  check.template operator()<geomint::constrained_lpf<3, geomint::gauss_interior>>();
+}

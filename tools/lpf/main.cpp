@@ -44,7 +44,8 @@ const std::string usage = std::string(
     "a field Q(r); docs/guide/tableau_files.md), in the --digits chosen; it excludes --scheme,\n"
     "--nodes, --basis and --m, and rkn and prk tableaux need a natural system (not charged). A\n"
     "malformed file is a usage error naming the file and line.\n"
-    "--compensated adds the increments of q and p with compensated summation (free systems).\n"
+    "--compensated adds the increments of q and p with compensated summation (on circle and\n"
+    "spherical those of q: the momentum is projected onto the constraint at every step).\n"
     "--growth fits the growth of the energy error (free systems; to stderr with --csv): the RMS\n"
     "of |E - E0| over the windows of steps [2^j, 2^(j+1)), and the least-squares slope of log RMS\n"
     "against log t over the windows from step 1024 on (1/2: round-off as a random walk, Brouwer's\n"
@@ -68,7 +69,9 @@ int run_constrained_or_paper23(const geomint::run::options& o) {
   using namespace geomint::run;
   if (o.system != "circle" && o.system != "spherical")
     throw std::invalid_argument("--scheme paper23 is the paper's scheme for --system circle only");
-  if (o.compensated || o.growth) throw std::invalid_argument("--compensated and --growth apply to the free systems only");
+  if (o.growth) throw std::invalid_argument("--growth applies to the free systems only");
+  if (o.compensated && o.scheme == "paper23")
+    throw std::invalid_argument("--compensated applies to the one-step form (--scheme lpf), not to the two-step scheme paper23");
   if (o.estimate) throw std::invalid_argument("--estimate applies to the free systems only");
   if (o.system == "circle")
     return geomint::cli::with_digits(o.digits, [&]<int D>() { return geomint::run::run_constrained<constrained_system::circle, D>(o); });

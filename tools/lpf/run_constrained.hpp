@@ -66,6 +66,7 @@ int run_constrained_fb(const options& o) {
   using scheme = constrained_lpf<M, Family, Basis>;
   constrained_integrator<scheme, Sys, Con, T> integrator(Sys{}, Con{}, tau);
   integrator.set_monitor(run_monitor<T>(o));
+  integrator.set_compensated_summation(o.compensated);
   const auto [q0, p0] = constrained_initial_data<Sys, T>(o);
   // M = identity for both systems, so the momentum p0 is the initial velocity.
   auto s = integrator.initial_state(q0, p0);

@@ -58,19 +58,20 @@ class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::do
   const Sys& system() const { return sys_; }
   const Con& constraints() const { return con_; }
 
-  /// (The constrained integrator has no compensated summation: the carry is always null.)
+  /// With a carry (compensated summation) the path starts at q + carry.q and the momentum row
+  /// matches p + carry.p (path_method::from_start, momentum_mismatch).
   void residual(const V& q, const V& p, const T& tau, const Z& z, Z& Fv, square_matrix<T, unknowns>* J,
-                const phase_carry<T, n>* = nullptr) const {
-    forward_residual<unknowns, true>(q, p, tau, z, Fv, J);
+                const phase_carry<T, n>* carry = nullptr) const {
+    forward_residual<unknowns, true>(q, p, tau, z, Fv, J, carry);
   }
 
   /// q_{k+1} = X_m; p_{k+1} = dL/dqdot(t_{k+1}) projected onto the hidden constraint.
-  /// q as an increment, the projected momentum as a value (end_update).
+  /// q as an increment (compensated with a carry), the projected momentum as a value (end_update).
   step_status finish(const V& q, const V&, const T& tau, const Z& z, end_update<T, n>& u,
-                     const phase_carry<T, n>* = nullptr) const {
+                     const phase_carry<T, n>* carry = nullptr) const {
     const controls Y = unpack_path<T, n, M, unknowns>(z);
     u.q = w_.template value<n>(Y, M);
-    const V q1 = q + u.q;
+    const V q1 = this->from_start(q, u.q, carry);
     const V p_end = D::gradient(sys_, q1, V(combine(Y, w_.D1, M) / tau)).Lv;
     step_status st;
     u.p_is_increment = false;
@@ -147,24 +148,26 @@ class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::do
   /// G(q_k)^T nu = 0 (eq. 9 with the jump of eq. 5); interior nodes: eq. (4) and f = 0; with
   /// `keep_ends`, f(X_m) = 0 at t_{k+1} (eq. 5). J (if not null) = dF/dz.
   template <int N, bool keep_ends>
-  void forward_residual(const V& q, const V& p, const T& tau, const vec<T, N>& z, vec<T, N>& Fv, square_matrix<T, N>* J) const {
+  void forward_residual(const V& q, const V& p, const T& tau, const vec<T, N>& z, vec<T, N>& Fv, square_matrix<T, N>* J,
+                        const phase_carry<T, n>* carry = nullptr) const {
     constexpr int mu_offset = M * n;                                 // mu_1..mu_{m-1}
     [[maybe_unused]] constexpr int nu_offset = M * n + (M - 1) * c;  // nu (keep only)
     controls X = unpack_path<T, n, M, N>(z);
-    for (int j = 0; j <= M; ++j) X.col(j) += q;
+    for (int j = 0; j <= M; ++j) X.col(j) = this->from_start(q, V(X.col(j)), carry);
+    const V x0 = X.col(0);  // q, or q + carry.q
     Fv.setZero();
     if (J) J->setZero();
     const V v = combine(X, w_.D1, 0) / tau;
     if (J) {
-      const hessian_data<T, n> h = D::hessian(sys_, q, v);
-      Fv.template segment<n>(0) = tau * (h.Lv - p);
+      const hessian_data<T, n> h = D::hessian(sys_, x0, v);
+      Fv.template segment<n>(0) = tau * this->momentum_mismatch(h.Lv, p, carry);
       for (int j = 1; j <= M; ++j)
         J->template block<n, n>(0, (j - 1) * n) = (tau * w_.D0(0, j)) * h.Lvq + w_.D1(0, j) * h.Lvv;
     } else {
-      Fv.template segment<n>(0) = tau * (D::momentum_of(sys_, q, v) - p);
+      Fv.template segment<n>(0) = tau * this->momentum_mismatch(D::momentum_of(sys_, x0, v), p, carry);
     }
     if constexpr (keep_ends) {
-      const auto g0 = F::first(con_, q);
+      const auto g0 = F::first(con_, x0);
       Fv.template segment<n>(0) += g0.G.transpose() * z.template segment<c>(nu_offset);
       if (J) J->template block<n, c>(0, nu_offset) = g0.G.transpose();
     }

@@ -72,11 +72,11 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
       const V v = combine(Y, w_.D1, 0) / tau;
       if (J) {
         const hessian_data<T, n> h = D::hessian(sys_, x, v);
-        F.template segment<n>(0) = tau * momentum_mismatch(h.Lv, p, carry);
+        F.template segment<n>(0) = tau * this->momentum_mismatch(h.Lv, p, carry);
         for (int j = 1; j <= M; ++j)
           J->template block<n, n>(0, (j - 1) * n) = (tau * w_.D0(0, j)) * h.Lvq + w_.D1(0, j) * h.Lvv;
       } else {
-        F.template segment<n>(0) = tau * momentum_mismatch(D::momentum_of(sys_, x, v), p, carry);
+        F.template segment<n>(0) = tau * this->momentum_mismatch(D::momentum_of(sys_, x, v), p, carry);
       }
     }
     for (int i = 1; i < M; ++i) {
@@ -178,11 +178,6 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
   }
 
  private:
-  /// L_v - p_k, or L_v - (p_k + carry.p) with the small parts subtracted last.
-  static V momentum_mismatch(const V& Lv, const V& p, const phase_carry<T, n>* carry) {
-    return carry ? V(V(Lv - p) - carry->p) : V(Lv - p);
-  }
-
   std::array<T, M - 1> quad_b_, quad_beta_;
   mat<T, n> minv_ = mat<T, n>::Zero();  // M^{-1} (natural systems)
 };

@@ -48,6 +48,10 @@ class path_method {
   static V from_start(const V& q, const V& d, const phase_carry<T, n>* carry) {
     return carry ? V(q + V(carry->q + d)) : V(q + d);
   }
+  /// L_v - p_k, or L_v - (p_k + carry.p) with the small parts subtracted last.
+  static V momentum_mismatch(const V& Lv, const V& p, const phase_carry<T, n>* carry) {
+    return carry ? V(V(Lv - p) - carry->p) : V(Lv - p);
+  }
 
   /// The control points X_0..X_M of the path fitted on the step from q_k with unknowns z.
   controls path(const V& q, const Z& z) const {
