@@ -54,6 +54,33 @@ constexpr bool tree_counts_match() {
   return trees[7] == 20 && trees[14] == 2208;
 }
 static_assert(tree_counts_match());
+// The printed list: Hairer, Norsett & Wanner, Solving ODEs I, 1st ed. (1987), section II.13,
+// Table 13.3 ("SN-trees, elementary differentials and order conditions") lists t1..t13 with
+// rho(t) = 1, 2, 3, 3, 4, 4, 4, 5 (six times): 1, 1, 2, 3, 6 trees of orders 1..5, with the
+// densities gamma 1; 2; 3, 6; 4, 8, 24; 5, 10, 20, 30, 60, 120 (the same section is II.14 of the
+// 2nd ed., whose Theorem 14.10 the analysis cites).
+constexpr bool hnw_table_13_3() {
+  const nystrom_tree_table t = make_nystrom_trees(5);
+  if (t.count(1) != 1 || t.count(2) != 1 || t.count(3) != 2 || t.count(4) != 3 || t.count(5) != 6) return false;
+  const std::int64_t expected[6][6] = {{}, {1}, {2}, {3, 6}, {4, 8, 24}, {5, 10, 20, 30, 60, 120}};
+  for (int n = 1; n <= 5; ++n) {
+    std::int64_t gammas[6]{};
+    int k = 0;
+    for (const auto& tree : t.trees)
+      if (tree.size == n) gammas[k++] = tree.gamma;
+    for (int i = 0; i < k; ++i)  // as a multiset: sort the (at most 6) densities
+      for (int j = i + 1; j < k; ++j)
+        if (gammas[j] < gammas[i]) {
+          const std::int64_t x = gammas[i];
+          gammas[i] = gammas[j];
+          gammas[j] = x;
+        }
+    for (int i = 0; i < k; ++i)
+      if (gammas[i] != expected[n][i]) return false;
+  }
+  return true;
+}
+static_assert(hnw_table_13_3());
 // Densities and symmetries of the trees of size 3: f''(p, p) (gamma 3, sigma 2), f' f (gamma 6, sigma 1).
 static_assert(make_nystrom_trees(3).trees[2].gamma == 3 && make_nystrom_trees(3).trees[2].sigma == 2);
 static_assert(make_nystrom_trees(3).trees[3].gamma == 6 && make_nystrom_trees(3).trees[3].sigma == 1);

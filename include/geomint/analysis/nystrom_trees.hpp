@@ -20,7 +20,9 @@
 /// Number of trees with n vertices, n = 1, 2, ...: 1, 1, 2, 3, 6, 10, 20, 36, 72, 137, 275, 541,
 /// 1098, 2208, 4521, 9240, 19084: the coefficients of S(x) = x prod_k (1 - x^k)^(-B_k), B(x) =
 /// x + x S(x) (a fat root with a multiset of sons, each a meagre leaf or a meagre vertex over a
-/// tree), checked against that generating function in tests/analysis/static_scheme_analysis.cpp.
+/// tree), checked against that generating function in tests/analysis/static_scheme_analysis.cpp,
+/// and to order 5 against the trees HNW I lists with their densities (1st ed. 1987, section
+/// II.13, Table 13.3: 1, 1, 2, 3, 6 SN-trees of orders 1..5).
 /// (They are not OEIS A001678, the series-reduced planted trees: that sequence agrees for up to
 /// 6 vertices and then gives 19 where there are 20 trees of 7.) The number of order conditions
 /// of order q is the count for q (velocity) plus the count for q - 1 (position).
