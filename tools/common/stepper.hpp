@@ -45,6 +45,22 @@ inline const std::vector<std::string>& zoo_systems() {
   return names;
 }
 
+/// The names of the natural systems of a list (those of lpf-fixed-point).
+template <class... S>
+std::vector<std::string> natural_system_names(system_list<S...>) {
+  std::vector<std::string> out;
+  ((natural_system<S> ? out.push_back(std::string(S::name)) : void()), ...);
+  return out;
+}
+inline const std::vector<std::string>& natural_free_systems() {
+  static const std::vector<std::string> names = natural_system_names(free_system_types{});
+  return names;
+}
+inline const std::vector<std::string>& natural_zoo_systems() {
+  static const std::vector<std::string> names = natural_system_names(zoo_system_types{});
+  return names;
+}
+
 /// f.template operator()<Sys>() for the free system called `name` (std::invalid_argument
 /// listing the names otherwise).
 template <class F>

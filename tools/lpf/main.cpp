@@ -1,6 +1,7 @@
 /// geomint-run: integrate a built-in system with an LPF or classical variational integrator.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "geomint/cli/run.hpp"
 #include "run.hpp"
@@ -8,10 +9,18 @@
 
 namespace {
 
-const std::string usage = std::string(
-    "usage: geomint-run [--system harmonic|pendulum|kepler|charged|circle|spherical|henon-heiles|\n"
-    "                             spring-pendulum|double-pendulum|toda|outer-solar|arenstorf]\n"
-    "                   [--scheme lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin|paper23 | --tableau FILE]\n") +
+/// The systems of --system: the free ones (tools/common/stepper.hpp), the constrained ones after
+/// the built-in free systems.
+std::string system_choices() {
+  std::vector<std::string> names = geomint::tools::builtin_systems();
+  names.insert(names.end(), {"circle", "spherical"});
+  for (const std::string& z : geomint::tools::zoo_systems()) names.push_back(z);
+  return geomint::core::detail::joined(names);
+}
+
+const std::string usage =
+    "usage: geomint-run [--system " + system_choices() + "]\n" +
+    "                   [--scheme " + geomint::core::detail::joined(geomint::cli::scheme_list()) + "|paper23 | --tableau FILE]\n" +
     "                   [--nodes " + geomint::core::detail::joined(geomint::node_family_names) + " (or gauss_lobatto, ...)]\n" +
     "                   [--basis lagrange|bernstein]\n"
     "                   [--m M (2..16)] [--tau T (> 0)] [--steps N (0..10^12)] [--every K (1..10^12)]\n"
@@ -24,8 +33,8 @@ const std::string usage = std::string(
     "degree-m Galerkin VI with m-point Gauss-Legendre quadrature of the action. m = 2..8 for\n"
     "every scheme and node family; m = 9..16 for lpf --nodes gauss-interior --basis lagrange and\n"
     "galerkin on every free system, in 16 and 50 digits.\n"
-    "lpf --nodes gauss-interior --basis lagrange on a natural system (harmonic, pendulum, kepler,\n"
-    "henon-heiles, toda, outer-solar) takes its steps in the fixed-point form (no Jacobian;\n"
+    "lpf --nodes gauss-interior --basis lagrange on a natural system (" + geomint::cli::comma_list(geomint::tools::natural_free_systems()) + ")\n"
+    "takes its steps in the fixed-point form (no Jacobian;\n"
     "coefficients exactly symplectic in the scalar), with Newton for a step beyond its reach.\n"
     "lpf-fixed-point, kept for one release, is that scheme with the fixed-point form alone.\n"
     "Defaults: harmonic q0=1,qdot0=1; pendulum q0=1,qdot0=0; kepler q0=(0.5,0),qdot0=(0,sqrt 3);\n"
@@ -39,7 +48,7 @@ const std::string usage = std::string(
     "(the paper's scheme (23) as printed); spherical (unit spherical pendulum, f = |q|^2 - 1;\n"
     "q0=(sin,0,-cos)(pi/4), p0=(0,0.8,0)) with --scheme lpf. Their CSV adds a constraint column,\n"
     "max |f_l(q)|; initial data off the constraint or with a normal velocity are rejected.\n"
-    "--tableau FILE integrates a free system (harmonic, pendulum, kepler, charged, the zoo) with the\n"
+    "--tableau FILE integrates a free system (every system but circle and spherical) with the\n"
     "method written in FILE (an rk, prk, rkn or nystrom tableau with exact entries, optionally over\n"
     "a field Q(r); docs/guide/tableau_files.md), in the --digits chosen; it excludes --scheme,\n"
     "--nodes, --basis and --m, and rkn and prk tableaux need a natural system (not charged). A\n"
@@ -59,9 +68,9 @@ const std::string usage = std::string(
     "The step monitor (on by default; --no-monitor turns it off) refuses a step that does not\n"
     "resolve the motion (tau omega_max above the scheme's bound) or whose energy error is\n"
     "comparable to the energy it exchanges (docs/guide/robustness.md); exit status 3.\n"
-    "The problem zoo (geomint/mechanics/zoo.hpp): henon-heiles, spring-pendulum, double-pendulum,\n"
-    "toda, outer-solar, arenstorf, each from its documented initial data, with every scheme, m and\n"
-    "--digits of the built-in free systems.\n";
+    "The problem zoo (geomint/mechanics/zoo.hpp): " + geomint::cli::comma_list(geomint::tools::zoo_systems()) + ",\n"
+    "each from its documented initial data, with every scheme, m and --digits of the built-in free\n"
+    "systems.\n";
 
 /// The constrained systems and the paper's scheme (23): what geomint-run adds to the front end
 /// of the free systems (geomint/cli/run.hpp).

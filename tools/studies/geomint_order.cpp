@@ -16,13 +16,10 @@ const std::string usage = std::string(
     "arithmetic; the reference flow is an adaptive Taylor series method with closed-form\n"
     "accelerations in twice the working digits (50 -> 100, 100 -> 150).\n"
     "Reports the observed orders between the two finest steps (local_order = exponent of the local\n"
-    "error, p + 1; global_order = p) and the error constant C = global error / tau^round(p).\n"
-    "  systems: harmonic, pendulum, kepler, charged (all); initial data as geomint-run\n"
-    "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems; kept\n"
-    "  for one release: lpf on gauss-interior takes the same steps there)\n") +
-    "  nodes (lpf): " + geomint::cli::node_family_text() + " (all)\n" +
-    "Zoo systems (zoo): henon-heiles, spring-pendulum, double-pendulum, toda, outer-solar, arenstorf,\n"
-    "with every scheme (lpf-fixed-point: henon-heiles, toda, outer-solar), are studied in double\n"
+    "error, p + 1; global_order = p) and the error constant C = global error / tau^round(p).\n") +
+    geomint::cli::selection_usage(geomint::tools::builtin_systems()) +
+    "Zoo systems (zoo): " + geomint::cli::comma_list(geomint::tools::zoo_systems()) + ",\n"
+    "with every scheme (lpf-fixed-point: " + geomint::cli::comma_list(geomint::tools::natural_zoo_systems()) + "), are studied in double\n"
     "(--digits 16, which they require); their reference flow is the Galerkin VI of degree 3\n"
     "(outer-solar: 2) in 50 digits, the step halved until two runs agree to 16 eps of double. The\n"
     "built-in systems need --digits 50|100.\n"

@@ -22,13 +22,10 @@ const std::string usage = std::string(
     "of the defect (analysis/bseries/lpf_symplecticity_defect.hpp, docs/results/schemes.md): lpf on\n"
     "a system that is not natural the quadrature order of its interior nodes plus one (2m-1 on\n"
     "gauss-interior), likewise on a natural system unless the scheme is symplectic there; inf where\n"
-    "the defect vanishes identically (midpoint, trapezoidal, galerkin; symplectic lpf on natural).\n"
-    "  systems: harmonic, pendulum, kepler, charged (all); default initial data as geomint-run\n"
-    "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems; kept\n"
-    "  for one release: lpf on gauss-interior takes the same steps there)\n") +
-    "  nodes (lpf): " + geomint::cli::node_family_text() + " (all)\n" +
-    "  zoo systems: henon-heiles, spring-pendulum, double-pendulum, toda, outer-solar, arenstorf\n"
-    "  (zoo) with every scheme and --digits (lpf-fixed-point: henon-heiles, toda, outer-solar).\n"
+    "the defect vanishes identically (midpoint, trapezoidal, galerkin; symplectic lpf on natural).\n") +
+    geomint::cli::selection_usage(geomint::tools::builtin_systems()) +
+    "  zoo systems: " + geomint::cli::comma_list(geomint::tools::zoo_systems()) + "\n"
+    "  (zoo) with every scheme and --digits (lpf-fixed-point: " + geomint::cli::comma_list(geomint::tools::natural_zoo_systems()) + ").\n"
     "Error estimates (a posteriori, always printed): defect_estimate, the change of the defect when\n"
     "the difference step is doubled (the size of the defect's own numerical error); with\n"
     "--long-steps, the same long run at tau/2 (2N steps) and state_error_estimate = 2 |z_N(tau) -\n"

@@ -152,8 +152,8 @@ inline std::string node_family_text() {
 
 /// The lines of a study's usage text that name its selection over the systems `names`.
 inline std::string selection_usage(const std::vector<std::string>& names) {
-  return "  systems: " + comma_list(names) + " (all); initial data as run\n"
-         "  schemes: lpf, midpoint, trapezoidal, galerkin (all); lpf-fixed-point (natural systems;\n"
+  return "  systems: " + comma_list(names) + " (all); initial data as geomint-run\n"
+         "  schemes: " + comma_list(schemes_of_every_system()) + " (all); lpf-fixed-point (natural systems;\n"
          "           kept for one release: lpf on gauss-interior takes its steps on natural systems)\n"
          "  nodes (lpf): " + node_family_text() + " (all)\n";
 }
