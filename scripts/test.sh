@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test: GCC, and Clang with ASan + UBSan, each through its CMake workflow preset.
 # gcc-test is the gcc preset with the tools at -Og (they are compiled for their tests, not their
-# speed); gcc builds them at -O3 as the demonstration does.
+# speed) and without the Catch2 suites (clang builds and runs those, with the sanitizers); gcc
+# builds everything, the tools at -O3 as the demonstration does.
 # Usage: bash scripts/test.sh [preset...]   (default: gcc-test clang)
 set -euo pipefail
 cd "$(dirname "$0")/.."
