@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test: GCC, and Clang with ASan + UBSan, each through its CMake workflow preset.
 # gcc-test is the gcc preset with the tools at -Og (they are compiled for their tests, not their
-# speed) and without the Catch2 suites (clang builds and runs those, with the sanitizers); gcc
+# speed) and with the Catch2 suites of tests/core and tests/mechanics only (those over every
+# scalar type; clang builds and runs every suite, with the sanitizers); gcc
 # builds everything, the tools at -O3 as the demonstration does.
 # Usage: bash scripts/test.sh [preset...]   (default: gcc-test clang)
 set -euo pipefail
