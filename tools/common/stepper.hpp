@@ -49,7 +49,9 @@ inline const std::vector<std::string>& zoo_systems() {
 template <class... S>
 std::vector<std::string> natural_system_names(system_list<S...>) {
   std::vector<std::string> out;
-  ((natural_system<S> ? out.push_back(std::string(S::name)) : void()), ...);
+  ([&] {
+    if constexpr (natural_system<S>) out.push_back(std::string(S::name));
+  }(), ...);
   return out;
 }
 inline const std::vector<std::string>& natural_free_systems() {

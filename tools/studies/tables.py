@@ -6,13 +6,19 @@ import csv
 import os
 import sys
 
-ROWS = [("lpf", "equispaced"), ("lpf", "lobatto"), ("lpf", "chebyshev"), ("lpf", "gauss-interior"),
-        ("galerkin", "-"), ("midpoint", "-"), ("trapezoidal", "-")]
-
-
 def read(path):
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
+
+
+def row_keys(rows):
+    """The (scheme, nodes) pairs in the order the tools print them (their node families and
+    schemes, from the library's lists: no list of them here)."""
+    keys = []
+    for r in rows:
+        if (r["scheme"], r["nodes"]) not in keys:
+            keys.append((r["scheme"], r["nodes"]))
+    return keys
 
 
 def pivot(rows, value, title):
@@ -24,7 +30,7 @@ def pivot(rows, value, title):
         if r["system"] not in systems:
             systems.append(r["system"])
     for system in systems:
-        for scheme, nodes in ROWS:
+        for scheme, nodes in row_keys(rows):
             cells = {r["m"]: value(r) for r in rows
                      if r["system"] == system and r["scheme"] == scheme and r["nodes"] == nodes}
             if not cells:

@@ -61,9 +61,10 @@ inline std::string joined(const auto& names) {
 namespace core::detail {
 template <class... F>
 constexpr std::optional<std::string_view> canonical_in(std::string_view name, type_list<F...>) {
-  std::optional<std::string_view> out;
-  ((!out && (same_name(name, F::name) || same_name(name, F::type_name)) ? (out = F::name, true) : false), ...);
-  return out;
+  const std::string_view printed[] = {F::name...}, types[] = {F::type_name...};
+  for (std::size_t i = 0; i < sizeof...(F); ++i)
+    if (same_name(name, printed[i]) || same_name(name, types[i])) return printed[i];
+  return std::nullopt;
 }
 template <class First, class... Rest, class F>
 decltype(auto) with_family_from(std::string_view printed, F&& f) {
