@@ -67,6 +67,13 @@ T interval_end(const stability_interval& interval) {
   return sqrt(to_t(interval.refined(200).low()));
 }
 
+/// A verdict with a bounded, nonempty interval of the given kind.
+void require_bounded_interval(const method_verdicts& v, stability_verdict kind) {
+  CHECK(v.stability == kind);
+  REQUIRE_FALSE(v.interval.unbounded);
+  REQUIRE_FALSE(v.interval.empty);
+}
+
 /// max(|q|, |p|) over `steps` steps of y'' = -y from (1, 0) with an explicit rkn tableau (its
 /// coefficients in 50 digits; Q_i = q + c_i h p + h^2 sum_j a_ij F_j, F_j = -Q_j).
 T explicit_rkn_amplitude(const methods::tableau_data<field_element>& t, const T& h, int steps) {
@@ -131,9 +138,7 @@ TEST_CASE("Forest-Ruth, Yoshida, Suzuki over Q(2^(1/3)): the interval of periodi
     const method_verdicts v = verdicts(t);
     REQUIRE(v.oscillator_in_field);
     CHECK(v.field_oscillator.determinant_is_one);  // symplectic: det M = 1
-    CHECK(v.stability == stability_verdict::periodic);
-    REQUIRE_FALSE(v.interval.unbounded);
-    REQUIRE_FALSE(v.interval.empty);
+    require_bounded_interval(v, stability_verdict::periodic);
     const T tau = interval_end(v.interval), reference = first_trace_exit([&](const T& h) { return composed(e.base, e.gamma, h); });
     using std::abs;
     CHECK(abs(tau - reference) < T(1) / T("1e40"));
@@ -178,9 +183,7 @@ TEST_CASE("McLachlan's SB3A over quadratic fields: the interval of periodicity o
     INFO(v.oscillator_reason);
     REQUIRE(v.oscillator_in_field);
     CHECK(v.field_oscillator.determinant_is_one);
-    CHECK(v.stability == stability_verdict::periodic);
-    REQUIRE_FALSE(v.interval.unbounded);
-    REQUIRE_FALSE(v.interval.empty);
+    require_bounded_interval(v, stability_verdict::periodic);
     // The first exit of |tr M| from [-2, 2] of the printed coefficients' matrices.
     using std::abs;
     const T tau = interval_end(v.interval), reference = first_trace_exit([&](const T& h) { return kick_drift(e.drifts, e.kicks, h); });
@@ -293,9 +296,7 @@ TEST_CASE("An explicit rk method over Q(sqrt 2): its finite imaginary-axis inter
   const method_verdicts v = verdicts(t);
   REQUIRE(v.rk_in_field);
   CHECK_FALSE(v.field_rk.a_stable);
-  CHECK(v.stability == stability_verdict::absolute);
-  REQUIRE_FALSE(v.interval.unbounded);
-  REQUIRE_FALSE(v.interval.empty);
+  require_bounded_interval(v, stability_verdict::absolute);
   using std::abs;
   using std::sqrt;
   CHECK(abs(interval_end(v.interval) - sqrt(2 * sqrt(T(2)) - 2)) < T(1) / T("1e40"));
