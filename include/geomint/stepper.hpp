@@ -8,10 +8,10 @@
 ///   geomint::step_status st = s->try_step(q, p, tau, q1, p1);
 ///
 /// `make_stepper<Sys, T>` instantiates every scheme a spec can name for one (Sys, T): LPF for
-/// m = 2..8 on the four node families and both bases, Galerkin for m = 2..8, midpoint and
-/// trapezoidal: 65 schemes over 23 engines (the node families of one LPF method share its
-/// engine, `engine_stepper`); on a natural system also LPF's fixed-point form for m = 2..8
-/// (`lpf-fixed-point`, schemes/lpf_fixed_point.hpp: 7 more engines). That is some 30 s of GCC
+/// m = 2..8 on the six node families and both bases, Galerkin for m = 2..8, midpoint and
+/// trapezoidal: 93 schemes over 16 engines (the node families and bases of one LPF method are
+/// data of one engine, `engine_stepper`); on a natural system also LPF's fixed-point form for
+/// m = 2..8 (`lpf-fixed-point`, schemes/lpf_fixed_point.hpp: 7 more engines). That is some 30 s of GCC
 /// 12 CPU time per (Sys, T) (the 12 units of tools/common: 28-34 s each; scripts/compile_times.sh), so
 /// a program instantiates it once per (Sys, T): `extern template` where it is used, `template`
 /// in one source file (as tools/common/stepper_tu.cpp does).

@@ -50,14 +50,17 @@ TEST_CASE("stepper: a scheme chosen by name steps exactly like the typed integra
   CHECK(by_name({"lpf-fixed-point", "equispaced", "lagrange", 8}) == typed_step<lpf_fixed_point<8>>(q0, qdot0, tau));
   CHECK(make_stepper<systems::kepler, double>({"lpf-fixed-point", "equispaced", "lagrange", 8})->name() ==
         lpf_fixed_point<8>::name());
-  // The node families of one LPF method share one engine type (compiled once); each stepper
-  // keeps its own family's weights: the steps differ and each equals its typed integrator.
+  // The node families and bases of one LPF method share one engine type (compiled once); each
+  // stepper keeps its own weights: the steps differ and each equals its typed integrator.
   static_assert(std::is_same_v<detail::stepper_engine_t<lpf<4, gauss_interior>, systems::kepler, double>,
                                detail::stepper_engine_t<lpf<4, equispaced>, systems::kepler, double>>);
+  static_assert(std::is_same_v<detail::stepper_engine_t<lpf<4, gauss_interior>, systems::kepler, double>,
+                               detail::stepper_engine_t<lpf<4, gauss_interior, bernstein>, systems::kepler, double>>);
   static_assert(!std::is_same_v<detail::stepper_engine_t<lpf<4, gauss_interior>, systems::kepler, double>,
-                                detail::stepper_engine_t<lpf<4, gauss_interior, bernstein>, systems::kepler, double>>);
+                                detail::stepper_engine_t<lpf<5, gauss_interior>, systems::kepler, double>>);
   CHECK(by_name({"lpf", "equispaced", "lagrange", 4}) == typed_step<lpf<4, equispaced>>(q0, qdot0, tau));
   CHECK(by_name({"lpf", "equispaced", "lagrange", 4}) != by_name({"lpf", "gauss_interior", "lagrange", 4}));
+  CHECK(by_name({"lpf", "equispaced", "bernstein", 4}) == typed_step<lpf<4, equispaced, bernstein>>(q0, qdot0, tau));
 }
 
 TEST_CASE("stepper: unknown names and m out of range are errors; a failed step leaves the output alone", "[stepper]") {

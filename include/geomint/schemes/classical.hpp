@@ -23,9 +23,9 @@ namespace schemes::detail {
 /// [0, 1]: L_d = tau sum_k w_k L(x(g_k), xdot(g_k)); G_j = dL_d/dX_j. The unknowns are the
 /// increments Y_1..Y_M; the residual rows are tau G_0 + tau p_k (= 0, p_k = -d_1 L_d) and
 /// tau G_1..tau G_{M-1} (= 0, the path extremises the action).
-template <class Sys, class T, int M, int Q, class Basis>
-class galerkin_method : public path_method<Sys, T, M, Basis> {
-  using base = path_method<Sys, T, M, Basis>;
+template <class Sys, class T, int M, int Q>
+class galerkin_method : public path_method<Sys, T, M> {
+  using base = path_method<Sys, T, M>;
   using base::sys_;
 
  public:
@@ -146,8 +146,8 @@ class galerkin_method : public path_method<Sys, T, M, Basis> {
 
 /// The path weights of a degree-1 path (c = 0, 1): the midpoint and trapezoidal rules.
 template <class T>
-path_weights<T, 1, lagrange> linear_path_weights() {
-  return path_weights<T, 1, lagrange>::template make<equispaced>();
+path_weights<T, 1> linear_path_weights() {
+  return path_weights<T, 1>::template make<equispaced, lagrange>();
 }
 
 }  // namespace schemes::detail
@@ -166,7 +166,7 @@ struct galerkin_vi {
   static std::string name() { return "galerkin(m=" + std::to_string(M) + ", gauss-" + std::to_string(M) + ")"; }
 
   template <class Sys, class T>
-  using method = schemes::detail::galerkin_method<Sys, T, M, M, Basis>;
+  using method = schemes::detail::galerkin_method<Sys, T, M, M>;
   template <class Sys, class T>
   struct engine : schemes::detail::step_skeleton<method<Sys, T>> {
     explicit engine(const Sys& sys) : schemes::detail::step_skeleton<method<Sys, T>>(make(sys)) {}
@@ -178,7 +178,7 @@ struct galerkin_vi {
       const auto rule = gauss_legendre_rule<M, T>();
       vec<T, M> w;
       for (int k = 0; k < M; ++k) w[k] = rule.weights[static_cast<std::size_t>(k)];
-      return method<Sys, T>(sys, schemes::detail::path_weights<T, M, Basis>::template make<Family>(),
+      return method<Sys, T>(sys, schemes::detail::path_weights<T, M>::template make<Family, Basis>(),
                             schemes::detail::basis_at<0, Basis, Family, M, T, M>(rule.points),
                             schemes::detail::basis_at<1, Basis, Family, M, T, M>(rule.points), w);
     }
@@ -193,7 +193,7 @@ struct midpoint_vi {
   using family = equispaced;
   using basis = lagrange;
   template <class Sys, class T>
-  using method = schemes::detail::galerkin_method<Sys, T, 1, 1, lagrange>;
+  using method = schemes::detail::galerkin_method<Sys, T, 1, 1>;
   template <class Sys, class T>
   struct engine : schemes::detail::step_skeleton<method<Sys, T>> {
     /// One quadrature point at 1/2: x = (x^k + x^{k+1}) / 2, xdot = (x^{k+1} - x^k) / tau.
@@ -212,7 +212,7 @@ struct trapezoidal_vi {
   using family = equispaced;
   using basis = lagrange;
   template <class Sys, class T>
-  using method = schemes::detail::galerkin_method<Sys, T, 1, 2, lagrange>;
+  using method = schemes::detail::galerkin_method<Sys, T, 1, 2>;
   template <class Sys, class T>
   struct engine : schemes::detail::step_skeleton<method<Sys, T>> {
     /// Quadrature points 0 and 1 with weights 1/2; the slope is (x^{k+1} - x^k) / tau at both.

@@ -36,9 +36,9 @@ namespace schemes::detail {
 /// the increments Y_1..Y_m of the path (X_j = q_k + Y_j), the scaled multipliers
 /// mu_1..mu_{m-1} of the interior nodes and nu of the jump at t_k. With `drop`, the two-step
 /// form's residual leaves out nu and the end condition f(X_m) = 0 (the paper's scheme (23)).
-template <class Sys, class Con, class T, int M, class Basis>
-class constrained_lpf_method : public path_method<Sys, T, M, Basis, M * (Sys::dof + Con::count)> {
-  using base = path_method<Sys, T, M, Basis, M * (Sys::dof + Con::count)>;
+template <class Sys, class Con, class T, int M>
+class constrained_lpf_method : public path_method<Sys, T, M, M * (Sys::dof + Con::count)> {
+  using base = path_method<Sys, T, M, M * (Sys::dof + Con::count)>;
   using base::sys_;
   using base::w_;
 
@@ -252,12 +252,12 @@ struct constrained_lpf {
   }
 
   template <class Sys, class Con, class T>
-  using method = schemes::detail::constrained_lpf_method<Sys, Con, T, M, Basis>;
+  using method = schemes::detail::constrained_lpf_method<Sys, Con, T, M>;
   template <class Sys, class Con, class T>
   struct engine : schemes::detail::step_skeleton<method<Sys, Con, T>> {
     engine(const Sys& sys, const Con& con)
         : schemes::detail::step_skeleton<method<Sys, Con, T>>(
-              method<Sys, Con, T>(sys, con, schemes::detail::path_weights<T, M, Basis>::template make<Family>())) {}
+              method<Sys, Con, T>(sys, con, schemes::detail::path_weights<T, M>::template make<Family, Basis>())) {}
     const Sys& system() const { return this->method().system(); }
     const Con& constraints() const { return this->method().constraints(); }
     bool project_momentum(const vec<T, Sys::dof>& q, const vec<T, Sys::dof>& p_end, vec<T, Sys::dof>& p) const {

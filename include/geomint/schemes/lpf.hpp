@@ -33,9 +33,9 @@ inline std::string lpf_name(int m, std::string_view family, std::string_view bas
 /// increments Y_j = X_j - q_k (j = 1..m): both bases are partitions of unity, so
 /// x(c_i) = q_k + sum_j D0(i, j) Y_j and the derivative rows act on Y alone. The increments are
 /// O(tau), so the differentiation weights do not amplify the round-off of q_k.
-template <class Sys, class T, int M, class Basis>
-class lpf_method : public path_method<Sys, T, M, Basis> {
-  using base = path_method<Sys, T, M, Basis>;
+template <class Sys, class T, int M>
+class lpf_method : public path_method<Sys, T, M> {
+  using base = path_method<Sys, T, M>;
   using base::sys_;
   using base::w_;
 
@@ -182,33 +182,33 @@ class lpf_method : public path_method<Sys, T, M, Basis> {
   mat<T, n> minv_ = mat<T, n>::Zero();  // M^{-1} (natural systems)
 };
 
-/// The engine of LPF on a natural system in the Lagrange basis with the default solver: the
-/// Newton form (the step skeleton over lpf_method) for every node family, and on Gauss-interior
-/// nodes the fixed-point form in front of it (gauss_fixed_point.hpp): the same map, solved
-/// without a Jacobian in a fraction of the time. A step the fixed-point form cannot take (beyond
-/// the sweeps' reach, where the map is no contraction) is taken by Newton. One type for every
-/// node family (`skeleton_type`: the steppers of the families share its code); the family is
-/// data, as the nodes in the path weights.
+/// The engine of LPF on a natural system with the default solver: the Newton form (the step
+/// skeleton over lpf_method) for every node family and basis, and on Gauss-interior nodes in
+/// the Lagrange basis the fixed-point form in front of it (gauss_fixed_point.hpp): the same map,
+/// solved without a Jacobian in a fraction of the time. A step the fixed-point form cannot take
+/// (beyond the sweeps' reach, where the map is no contraction) is taken by Newton. One type for
+/// every node family and basis (`skeleton_type`: their steppers share its code); both are data,
+/// as the nodes and the basis matrices in the path weights.
 template <class Sys, class T, int M>
 class lpf_natural_engine {
-  using newton_engine = step_skeleton<lpf_method<Sys, T, M, lagrange>>;
+  using newton_engine = step_skeleton<lpf_method<Sys, T, M>>;
   using fixed_point_engine = gauss_fixed_point_engine<Sys, T, M>;
 
  public:
   using skeleton_type = lpf_natural_engine;
-  using method_type = lpf_method<Sys, T, M, lagrange>;
+  using method_type = lpf_method<Sys, T, M>;
   static constexpr int n = Sys::dof;
   using V = vec<T, n>;
   /// The path increments (as the Newton form's), so that dense output works with either solver.
   using unknowns = typename newton_engine::unknowns;
 
-  lpf_natural_engine(const Sys& sys, const path_weights<T, M, lagrange>& w, bool gauss_nodes)
+  lpf_natural_engine(const Sys& sys, const path_weights<T, M>& w, bool gauss_nodes)
       : newton_(method_type(sys, w)) {
     if (gauss_nodes) fixed_point_.emplace(sys);
   }
 
   const method_type& method() const { return newton_.method(); }
-  /// Whether steps are taken by the fixed-point form (Gauss-interior nodes).
+  /// Whether steps are taken by the fixed-point form (Gauss-interior nodes, Lagrange basis).
   bool fixed_point() const { return fixed_point_.has_value(); }
 
   /// One step (as step_skeleton::one_step): the fixed-point form where it applies and
@@ -266,17 +266,18 @@ concept lpf_solver = std::is_same_v<Solver, default_solver> || std::is_same_v<So
 namespace schemes::detail {
 /// The Newton form: the step skeleton over lpf_method.
 template <class Sys, class T, int M, class Family, class Basis>
-struct lpf_newton_engine : step_skeleton<lpf_method<Sys, T, M, Basis>> {
+struct lpf_newton_engine : step_skeleton<lpf_method<Sys, T, M>> {
   explicit lpf_newton_engine(const Sys& sys)
-      : step_skeleton<lpf_method<Sys, T, M, Basis>>(
-            lpf_method<Sys, T, M, Basis>(sys, path_weights<T, M, Basis>::template make<Family>())) {}
+      : step_skeleton<lpf_method<Sys, T, M>>(
+            lpf_method<Sys, T, M>(sys, path_weights<T, M>::template make<Family, Basis>())) {}
 };
-/// The default solver on a natural system in the Lagrange basis (lpf_natural_engine).
-template <class Sys, class T, int M, class Family>
+/// The default solver on a natural system (lpf_natural_engine): the fixed-point form on
+/// Gauss-interior nodes in the Lagrange basis (its stage values are that basis's unknowns).
+template <class Sys, class T, int M, class Family, class Basis>
 struct lpf_default_engine : lpf_natural_engine<Sys, T, M> {
   explicit lpf_default_engine(const Sys& sys)
-      : lpf_natural_engine<Sys, T, M>(sys, path_weights<T, M, lagrange>::template make<Family>(),
-                                      std::is_same_v<Family, gauss_interior>) {}
+      : lpf_natural_engine<Sys, T, M>(sys, path_weights<T, M>::template make<Family, Basis>(),
+                                      std::is_same_v<Family, gauss_interior> && std::is_same_v<Basis, lagrange>) {}
 };
 /// The fixed-point form alone.
 template <class Sys, class T, int M>
@@ -293,9 +294,9 @@ struct lpf_engine_of {
   using type = lpf_newton_engine<Sys, T, M, Family, Basis>;
 };
 template <class Sys, class T, int M, class Family, class Basis>
-  requires(natural_system<Sys> && std::is_same_v<Basis, lagrange>)
+  requires natural_system<Sys>
 struct lpf_engine_of<Sys, T, M, Family, Basis, default_solver> {
-  using type = lpf_default_engine<Sys, T, M, Family>;
+  using type = lpf_default_engine<Sys, T, M, Family, Basis>;
 };
 template <class Sys, class T, int M, class Family, class Basis>
 struct lpf_engine_of<Sys, T, M, Family, Basis, fixed_point_solver> {
@@ -324,7 +325,7 @@ struct lpf {
 
   /// The method behind the Newton form's step skeleton, and the engine the integrator drives.
   template <class Sys, class T>
-  using method = schemes::detail::lpf_method<Sys, T, M, Basis>;
+  using method = schemes::detail::lpf_method<Sys, T, M>;
   template <class Sys, class T>
   struct engine : schemes::detail::lpf_engine_of<Sys, T, M, Family, Basis, Solver>::type {
     explicit engine(const Sys& sys) : schemes::detail::lpf_engine_of<Sys, T, M, Family, Basis, Solver>::type(sys) {}

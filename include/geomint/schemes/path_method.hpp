@@ -11,9 +11,9 @@
 namespace geomint::schemes::detail {
 
 /// The base of a method whose first M n unknowns are the increments Y_1..Y_M = X_1..X_M - q_k
-/// of a degree-M path in `Basis` (Y_0 = 0). `Unknowns` counts all of them; those after the
+/// of a degree-M path in the basis of its weights (Y_0 = 0). `Unknowns` counts all of them; those after the
 /// path (a constrained method's multipliers) start at zero and are the method's own.
-template <class Sys, class T, int M, class Basis, int Unknowns = M * Sys::dof>
+template <class Sys, class T, int M, int Unknowns = M * Sys::dof>
 class path_method {
  public:
   static_assert(Unknowns >= M * Sys::dof, "geomint: the unknowns must hold the path increments");
@@ -25,7 +25,7 @@ class path_method {
   using Z = vec<T, unknowns>;
   using controls = Eigen::Matrix<T, n, M + 1>;
   using D = lagrangian_derivatives<Sys, T>;
-  using weights = path_weights<T, M, Basis>;
+  using weights = path_weights<T, M>;
 
   path_method(const Sys& sys, const weights& w) : sys_(sys), w_(w) {}
 

@@ -78,27 +78,31 @@ Eigen::Matrix<T, Q, M + 1> basis_at(const std::array<T, Q>& g) {
 
 /// The weights of a degree-M path on a node family in a basis: D_k(i, j) = phi_j^(k)(c_i),
 /// D0^{-1} (node values -> controls), and the extrapolation of a step's increments to the
-/// next step's. The basis is a compile-time property: in the Lagrange basis D0 = I, the
-/// unknowns are node values and `value` needs no product.
-template <class T, int M, class Basis>
+/// next step's. The basis is data, as the nodes are: every (family, basis) of one (T, M) has
+/// this type, so an engine's code is compiled once for all of them. In the Lagrange basis
+/// D0 = I exactly (`node_values`): the unknowns are node values and `value` needs no product.
+template <class T, int M>
 struct path_weights {
   using W = Eigen::Matrix<T, M + 1, M + 1>;
-  static constexpr bool node_values = std::is_same_v<Basis, lagrange>;
+  bool node_values = true;
   std::array<T, M + 1> c{};
   W D0, D1, D2, D0inv, extrapolate;
 
-  template <class Family>
+  template <class Family, class Basis>
   static path_weights make() {
-    return from_nodes(nodes<Family, M, T>());
+    return from_nodes<Basis>(nodes<Family, M, T>());
   }
   /// The weights on the nodes c. Family-free, so all node families of one (T, m, basis) share
   /// this code (it is most of an engine's set-up).
+  template <class Basis>
   static path_weights from_nodes(const std::array<T, M + 1>& c) {
+    static_assert(basis_kind<Basis>, "geomint: Basis must be lagrange or bernstein");
     path_weights w;
     w.c = c;
+    w.node_values = std::is_same_v<Basis, lagrange>;
     // In the Lagrange basis D0 = D0^{-1} = I exactly (l_j(c_i) = delta_ij): no evaluation, no
-    // inversion and no products with them, which also keeps their code out of every engine.
-    if constexpr (node_values) {
+    // inversion and no products with them.
+    if (w.node_values) {
       w.D0 = W::Identity();
       w.D0inv = W::Identity();
     } else {
@@ -107,17 +111,15 @@ struct path_weights {
     }
     w.D1 = to_matrix<T, M + 1>(differentiation_weights_at<1, Basis>(c));
     w.D2 = to_matrix<T, M + 1>(differentiation_weights_at<2, Basis>(c));
-    w.extrapolate = extrapolation(w.D0, w.D0inv, w.c);
+    w.extrapolate = extrapolation(w.D0, w.D0inv, w.c, w.node_values);
     return w;
   }
 
   /// x(c_i) - q for the path q + sum_j phi_j Y_j (both bases are partitions of unity).
   template <int n>
   vec<T, n> value(const Eigen::Matrix<T, n, M + 1>& Y, int i) const {
-    if constexpr (node_values)
-      return Y.col(i);
-    else
-      return combine(Y, D0, i);
+    if (node_values) return Y.col(i);
+    return combine(Y, D0, i);
   }
 
   /// Increments of the quadratic q + tau c v + (tau c)^2 a / 2 (minus q) at the nodes, mapped
@@ -129,7 +131,7 @@ struct path_weights {
       const T s = tau * c[static_cast<std::size_t>(i)];
       values.col(i) = s * v + (s * s / T(2)) * a;
     }
-    if constexpr (node_values) return values;
+    if (node_values) return values;
     Eigen::Matrix<T, n, M + 1> Y;
     for (int j = 0; j <= M; ++j) Y.col(j) = combine(values, D0inv, j);
     return Y;
@@ -139,7 +141,7 @@ struct path_weights {
   /// Maps the increments of a step's path to the predicted increments of the next step:
   /// values at the nodes of the next interval, 1 + c_i, by Lagrange interpolation through the
   /// path's node values, minus its end value, then back to the basis through D0^{-1}.
-  static W extrapolation(const W& D0, const W& D0inv, const std::array<T, M + 1>& c) {
+  static W extrapolation(const W& D0, const W& D0inv, const std::array<T, M + 1>& c, bool node_values) {
     W L;  // L(i, k) = l_k(1 + c_i), the Lagrange polynomials on the nodes
     for (int i = 0; i <= M; ++i)
       for (int k = 0; k <= M; ++k) {
@@ -150,16 +152,9 @@ struct path_weights {
             l *= (t - c[static_cast<std::size_t>(j)]) / (c[static_cast<std::size_t>(k)] - c[static_cast<std::size_t>(j)]);
         L(i, k) = l;
       }
-    W values;  // values at 1 + c_i of the path with controls e_j
-    if constexpr (node_values)
-      values = L;
-    else
-      values = L * D0;
+    W values = node_values ? L : W(L * D0);  // values at 1 + c_i of the path with controls e_j
     for (int i = 0; i <= M; ++i) values.row(i) -= D0.row(M);
-    if constexpr (node_values)
-      return values;
-    else
-      return D0inv * values;
+    return node_values ? values : W(D0inv * values);
   }
 };
 
