@@ -83,7 +83,7 @@ void circle_study(const std::string& dir, long steps) {
   using geomint::systems::free_particle_2d;
   using geomint::systems::unit_circle;
   const T tau = T(1) / 10;
-  const geomint::constrained_integrator<geomint::constrained_lpf<2>, free_particle_2d, unit_circle, T> lpf({}, {}, tau);
+  geomint::constrained_integrator<geomint::constrained_lpf<2>, free_particle_2d, unit_circle, T> lpf({}, {}, tau);
   auto s = lpf.initial_state(vec<T, 2>(1, 0), vec<T, 2>(0, 1));
   const T energy0 = lpf.energy(s);
   auto out = open_csv(dir + "/circle.csv", "step,t,lpf_constraint,lpf_energy_error");
@@ -115,7 +115,7 @@ void spherical_study(const std::string& dir) {
   using geomint::systems::unit_sphere;
   const T tau = T(1) / 20;
   const long steps = 100000;
-  const geomint::constrained_integrator<geomint::constrained_lpf<3, geomint::gauss_interior>, spherical_pendulum,
+  geomint::constrained_integrator<geomint::constrained_lpf<3, geomint::gauss_interior>, spherical_pendulum,
                                         unit_sphere, T>
       lpf({}, {}, tau);
   const T r = std::sqrt(T(1) / 2);
@@ -141,10 +141,10 @@ void double_pendulum_study(const std::string& dir) {
   using geomint::systems::double_pendulum_rods;
   const T tau = T(1) / 100, a = 1, b = T(1) / 2;
   const long steps = 2000;
-  const geomint::constrained_integrator<geomint::constrained_lpf<3, geomint::gauss_lobatto>, double_pendulum_cartesian,
+  geomint::constrained_integrator<geomint::constrained_lpf<3, geomint::gauss_lobatto>, double_pendulum_cartesian,
                                         double_pendulum_rods, T>
       cartesian({}, {}, tau);
-  const geomint::integrator<geomint::lpf<3, geomint::gauss_lobatto>, double_pendulum_angles, T> angular({}, tau);
+  geomint::integrator<geomint::lpf<3, geomint::gauss_lobatto>, double_pendulum_angles, T> angular({}, tau);
   auto sc = cartesian.initial_state(vec<T, 4>(std::sin(a), -std::cos(a), std::sin(a) + std::sin(b), -std::cos(a) - std::cos(b)),
                                     vec<T, 4>::Zero());
   auto sa = angular.initial_state(vec<T, 2>(a, b), vec<T, 2>::Zero());

@@ -31,6 +31,10 @@ class constrained_integrator {
   /// meets the constraints at the nodes where the scheme imposes them, not in between, and its
   /// end velocity is the one before the momentum projection.
   using path = step_path<T, n, Scheme::m, typename Scheme::family, typename Scheme::basis>;
+  using engine_type = typename Scheme::template engine<Sys, Con, T>;
+  /// What a step leaves for the next (integrator::cache_type): the integrator's own in its
+  /// non-const steps, the caller's in the const ones.
+  using cache_type = typename engine_type::cache_type;
 
   /// The Newton options are validated here (std::invalid_argument for max_iterations < 1 etc.).
   constrained_integrator(const Sys& sys, const Con& con, const T& tau, newton_options<T> opt = {})
@@ -103,44 +107,52 @@ class constrained_integrator {
   void set_compensated_summation(bool on) { compensated_ = on; }
   bool compensated_summation() const { return compensated_; }
 
+  /// The integrator's own cache; `cache() = {}` forgets the last step.
+  cache_type& cache() { return cache_; }
+
   /// One step without throwing; on failure s is unchanged.
-  step_status try_step(state& s) const {
+  step_status try_step(state& s) { return try_step(s, cache_); }
+  /// The same step with the caller's cache.
+  step_status try_step(state& s, cache_type& cache) const {
     const step_status st = check_step_input(s.step, tau_, s.q, s.p);
     if (!st) return st;
     vector q1, p1;
     phase_carry<T, n> carry1 = s.carry;
     phase_carry<T, n>* carry = compensated_ ? &carry1 : nullptr;
-    return finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, nullptr, carry), q1, p1, tau_, monitor_,
-                       engine_.system(), carry);
+    return finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &cache, nullptr, carry), q1, p1, tau_,
+                       monitor_, engine_.system(), carry);
   }
   /// One step; throws integration_error (reason and step index) on failure.
-  void step(state& s) const {
-    const step_status st = try_step(s);
+  void step(state& s) { step(s, cache_); }
+  void step(state& s, cache_type& cache) const {
+    const step_status st = try_step(s, cache);
     if (!st) throw integration_error(st);
   }
   /// `count` steps; throws on the first failure.
-  void advance(state& s, long count) const {
-    for (long i = 0; i < count; ++i) step(s);
+  void advance(state& s, long count) { advance(s, count, cache_); }
+  void advance(state& s, long count, cache_type& cache) const {
+    for (long i = 0; i < count; ++i) step(s, cache);
   }
 
   /// One step and its path (see `path`); throws integration_error on failure.
-  path step_with_path(state& s) const {
+  path step_with_path(state& s) {
     path out;
-    const step_status st = try_step_with_path(s, out);
+    const step_status st = try_step_with_path(s, out, cache_);
     if (!st) throw integration_error(st);
     return out;
   }
   /// As step_with_path without throwing: on failure s and `out` are unchanged.
-  step_status try_step_with_path(state& s, path& out) const {
+  step_status try_step_with_path(state& s, path& out) { return try_step_with_path(s, out, cache_); }
+  step_status try_step_with_path(state& s, path& out, cache_type& cache) const {
     const step_status in = check_step_input(s.step, tau_, s.q, s.p);
     if (!in) return in;
     vector q1, p1;
-    typename Scheme::template engine<Sys, Con, T>::unknowns z;
+    typename engine_type::unknowns z;
     const vector q0 = s.q;
     const T t0 = s.t;
     phase_carry<T, n> carry1 = s.carry;
     phase_carry<T, n>* carry = compensated_ ? &carry1 : nullptr;
-    const step_status st = finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &z, carry), q1, p1, tau_, monitor_,
+    const step_status st = finish_step(s, engine_.one_step(s.q, s.p, tau_, q1, p1, opt_, &cache, &z, carry), q1, p1, tau_, monitor_,
                                        engine_.system(), carry);
     if (st) out = path(t0, s.t, tau_, engine_.method().path(q0, z));
     return st;
@@ -178,7 +190,8 @@ class constrained_integrator {
     os << x;
     return os.str();
   }
-  typename Scheme::template engine<Sys, Con, T> engine_;
+  engine_type engine_;
+  cache_type cache_;
   T tau_;
   newton_options<T> opt_;
   step_monitor<T> monitor_;

@@ -77,14 +77,16 @@ class any_stepper {
   const step_monitor<T>& monitor() const { return monitor_; }
   /// One step of size tau from (q, p); on failure q1 and p1 are untouched. A state of the wrong
   /// dimension is a programming error (std::invalid_argument).
+  /// The stepper keeps its engine's cache (integrator::cache_type) from step to step, so a step
+  /// changes it: a stepper serves one trajectory at a time (make one per thread).
   virtual step_status try_step(const vector& q, const vector& p, const T& tau, vector& q1, vector& p1,
-                               const newton_options<T>& opt = {}) const = 0;
+                               const newton_options<T>& opt = {}) = 0;
   /// The same step with compensated summation of the end update (integrator::
   /// set_compensated_summation): q_carry and p_carry are the compensation terms of (q, p) on
   /// entry (zero to start) and of (q1, p1) on success; on failure all are untouched.
   virtual step_status try_step_compensated(const vector& q, const vector& p, vector& q_carry, vector& p_carry,
                                            const T& tau, vector& q1, vector& p1,
-                                           const newton_options<T>& opt = {}) const = 0;
+                                           const newton_options<T>& opt = {}) = 0;
   /// The energy at (q, p) (NaN where the Legendre transform cannot be inverted).
   virtual T energy(const vector& q, const vector& p) const = 0;
   /// p = dL/dqdot(q, qdot).
@@ -129,7 +131,7 @@ class engine_stepper : public any_stepper<T> {
   std::string name() const override { return name_; }
 
   step_status try_step(const vector& q, const vector& p, const T& tau, vector& q1, vector& p1,
-                       const newton_options<T>& opt) const override {
+                       const newton_options<T>& opt) override {
     phase_state<T, n> s;
     s.q = fixed(q);
     s.p = fixed(p);
@@ -137,7 +139,7 @@ class engine_stepper : public any_stepper<T> {
     if (!st) return st;
     V q1f = V::Zero(), p1f = V::Zero();
     const step_status done =
-        finish_step(s, engine_.one_step(s.q, s.p, tau, q1f, p1f, opt), q1f, p1f, tau, this->monitor_, sys_);
+        finish_step(s, engine_.one_step(s.q, s.p, tau, q1f, p1f, opt, &cache_), q1f, p1f, tau, this->monitor_, sys_);
     if (done) {
       q1 = s.q;
       p1 = s.p;
@@ -145,7 +147,7 @@ class engine_stepper : public any_stepper<T> {
     return done;
   }
   step_status try_step_compensated(const vector& q, const vector& p, vector& q_carry, vector& p_carry, const T& tau,
-                                   vector& q1, vector& p1, const newton_options<T>& opt) const override {
+                                   vector& q1, vector& p1, const newton_options<T>& opt) override {
     phase_state<T, n> s;
     s.q = fixed(q);
     s.p = fixed(p);
@@ -156,7 +158,7 @@ class engine_stepper : public any_stepper<T> {
     carry1.p = fixed(p_carry);
     V q1f = V::Zero(), p1f = V::Zero();
     const step_status done =
-        finish_step(s, engine_.one_step(s.q, s.p, tau, q1f, p1f, opt, nullptr, &carry1), q1f, p1f, tau, this->monitor_,
+        finish_step(s, engine_.one_step(s.q, s.p, tau, q1f, p1f, opt, &cache_, nullptr, &carry1), q1f, p1f, tau, this->monitor_,
                     sys_, &carry1);
     if (done) {
       q1 = s.q;
@@ -185,6 +187,7 @@ class engine_stepper : public any_stepper<T> {
   }
   Sys sys_;
   Engine engine_;
+  typename Engine::cache_type cache_;
   std::string name_;
 };
 

@@ -150,7 +150,7 @@ T node_polynomial_residual(const exact_rkn_tableau& t) {
 /// N = 4, 8, 16, against the Taylor reference flow (the machinery of geomint-order).
 template <class Scheme>
 analysis::order_result<T> measured_orders() {
-  const integrator<Scheme, systems::pendulum, T> I(systems::pendulum{}, T(1));
+  integrator<Scheme, systems::pendulum, T> I(systems::pendulum{}, T(1));
   analysis::reference_function<T> reference = [](const T& t, analysis::dynamic_vector<T>& q, analysis::dynamic_vector<T>& p) {
     analysis::reference_flow<systems::pendulum, T> flow(vec<T, 1>(T(1)), vec<T, 1>(T(1) / T(2)));
     flow.advance_to(t);
@@ -213,7 +213,7 @@ struct defect_record {
 
 template <class Scheme>
 defect_record measured_defect(const exact_rkn_tableau& t, const std::string& label) {
-  const integrator<Scheme, systems::pendulum, T> I(systems::pendulum{}, T(1) / T(2));
+  integrator<Scheme, systems::pendulum, T> I(systems::pendulum{}, T(1) / T(2));
   const T defect = analysis::symplecticity_defect(I, vec<T, 1>(T(1)), vec<T, 1>(T(1) / T(2)), T(1) / T(2));
   return {label, symplecticity(at_run_time(t)).symplectic, defect};
 }

@@ -38,7 +38,7 @@ analysis::step_function<T> step_of(const integrator<Scheme, Sys, T>& I) {
 template <class Scheme>
 analysis::order_result<T> pendulum_orders(const std::vector<long>& counts) {
   using R = boost::multiprecision::cpp_bin_float_100;
-  const integrator<Scheme, Pendulum, T> I;
+  integrator<Scheme, Pendulum, T> I;
   analysis::step_function<T> step = step_of(I);
   analysis::reference_function<T> reference = [](const T& t, analysis::dynamic_vector<T>& q,
                                                  analysis::dynamic_vector<T>& p) {
@@ -66,7 +66,7 @@ void check_orders(int expected_global) {
 /// The symplecticity defect of Scheme's one-step map on the pendulum at (q, p) = (1, 1/2), tau = 1/4.
 template <class Scheme>
 T pendulum_defect() {
-  const integrator<Scheme, Pendulum, T> I(Pendulum{}, T(1) / T(4));
+  integrator<Scheme, Pendulum, T> I(Pendulum{}, T(1) / T(4));
   analysis::phase_map<T> map = [&I](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
     typename integrator<Scheme, Pendulum, T>::state s;
     s.q[0] = z[0];

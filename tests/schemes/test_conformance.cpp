@@ -177,7 +177,7 @@ constexpr bool claims_symplectic() {
 TEMPLATE_LIST_TEST_CASE("conformance: symplectic exactly where claimed (pendulum, 50 digits)", "[conformance]", conformance_schemes) {
   using Scheme = TestType;
   using T = cpp_bin_float_50;
-  const integrator<Scheme, systems::pendulum, T> I(systems::pendulum{}, T(1) / T(4));
+  integrator<Scheme, systems::pendulum, T> I(systems::pendulum{}, T(1) / T(4));
   const phase_map<T> map = [&](const phase_vector<T>& z, phase_vector<T>& z1) {
     phase_state<T, 1> s;
     s.q[0] = z[0];
@@ -205,7 +205,7 @@ TEMPLATE_LIST_TEST_CASE("conformance: the constrained integrator follows the sam
                         geomint::test::integrator_scalar_types) {
   using T = TestType;
   const T tau = T(1) / T(10);
-  const constrained_integrator<constrained_lpf<3, gauss_interior>, systems::free_particle_2d, systems::unit_circle, T> I(
+  constrained_integrator<constrained_lpf<3, gauss_interior>, systems::free_particle_2d, systems::unit_circle, T> I(
       {}, {}, tau);
   auto s = I.initial_state(vec<T, 2>(T(1), T(0)), vec<T, 2>(T(0), T(1)));
   I.advance(s, 100);

@@ -36,7 +36,7 @@ TEMPLATE_LIST_TEST_CASE("the general machinery without eq. (5)'s end terms is th
   using geomint::systems::free_particle_2d;
   using geomint::systems::unit_circle;
   const T tau = T(1) / T(10);
-  const geomint::constrained_integrator<geomint::constrained_lpf<2>, free_particle_2d, unit_circle, T> integrator(
+  geomint::constrained_integrator<geomint::constrained_lpf<2>, free_particle_2d, unit_circle, T> integrator(
       {}, {}, tau);
   // Two points on the circle and one slightly off it: (23) is a map of the plane.
   const vec<T, 2> x0 = on_circle(T(0)), x1 = on_circle(tau);
@@ -60,7 +60,7 @@ TEMPLATE_LIST_TEST_CASE("constrained LPF: particle on the circle stays on it, en
   using geomint::systems::free_particle_2d;
   using geomint::systems::unit_circle;
   const T tau = T(1) / T(10);
-  const geomint::constrained_integrator<geomint::constrained_lpf<3, geomint::gauss_lobatto>, free_particle_2d,
+  geomint::constrained_integrator<geomint::constrained_lpf<3, geomint::gauss_lobatto>, free_particle_2d,
                                         unit_circle, T>
       integrator({}, {}, tau);
   auto s = integrator.initial_state(on_circle(T(0)), vec<T, 2>(T(0), T(1)));
@@ -91,7 +91,7 @@ double circle_observed_order() {
   using geomint::systems::free_particle_2d;
   using geomint::systems::unit_circle;
   auto error = [](const T& tau, long steps) {
-    const geomint::constrained_integrator<Scheme, free_particle_2d, unit_circle, T> integrator({}, {}, tau);
+    geomint::constrained_integrator<Scheme, free_particle_2d, unit_circle, T> integrator({}, {}, tau);
     auto s = integrator.initial_state(on_circle(T(0)), vec<T, 2>(T(0), T(1)));
     for (long k = 0; k < steps; ++k) integrator.step(s);
     return T((s.q - on_circle(T(T(steps) * tau))).template lpNorm<Eigen::Infinity>());
@@ -120,7 +120,7 @@ TEST_CASE("constrained LPF: dense output on the circle", "[constraints][step_pat
   using geomint::systems::unit_circle;
   using Scheme = geomint::constrained_lpf<3, geomint::gauss_lobatto>;
   auto error = [](const T& tau, long steps) {
-    const geomint::constrained_integrator<Scheme, free_particle_2d, unit_circle, T> integrator({}, {}, tau);
+    geomint::constrained_integrator<Scheme, free_particle_2d, unit_circle, T> integrator({}, {}, tau);
     auto s = integrator.initial_state(on_circle(T(0)), vec<T, 2>(T(0), T(1)));
     T worst(0);
     for (long k = 0; k < steps; ++k) {
@@ -146,7 +146,7 @@ TEMPLATE_LIST_TEST_CASE("constrained LPF: spherical pendulum conserves vertical 
   using geomint::systems::spherical_pendulum;
   using geomint::systems::unit_sphere;
   const T tau = T(1) / T(20);
-  const geomint::constrained_integrator<geomint::constrained_lpf<2>, spherical_pendulum, unit_sphere, T> integrator(
+  geomint::constrained_integrator<geomint::constrained_lpf<2>, spherical_pendulum, unit_sphere, T> integrator(
       {}, {}, tau);
   using std::sqrt;
   const T r = sqrt(T(T(1) / T(2)));
@@ -183,10 +183,10 @@ TEST_CASE("double pendulum: Cartesian with two rods agrees with angle coordinate
   const vec<T, 4> cart0(std::sin(a), -std::cos(a), std::sin(a) + std::sin(b), -std::cos(a) - std::cos(b));
   auto difference = [&](const T& tau) {
     const long steps = std::lround(final_time / tau);
-    const geomint::constrained_integrator<geomint::constrained_lpf<2>, double_pendulum_cartesian, double_pendulum_rods, T>
+    geomint::constrained_integrator<geomint::constrained_lpf<2>, double_pendulum_cartesian, double_pendulum_rods, T>
         cartesian({}, {}, tau);
     auto sc = cartesian.initial_state(cart0, vec<T, 4>::Zero());
-    const geomint::integrator<geomint::lpf<2>, double_pendulum_angles, T> angular({}, tau);
+    geomint::integrator<geomint::lpf<2>, double_pendulum_angles, T> angular({}, tau);
     auto sa = angular.initial_state(angles0, vec<T, 2>::Zero());
     for (long k = 0; k < steps; ++k) {
       cartesian.step(sc);
@@ -210,7 +210,7 @@ TEMPLATE_LIST_TEST_CASE("constrained LPF: bad input gets a clear error", "[const
   using geomint::systems::free_particle_2d;
   using geomint::systems::unit_circle;
   using I = geomint::constrained_integrator<geomint::constrained_lpf<2>, free_particle_2d, unit_circle, T>;
-  const I integrator({}, {}, T(1) / T(10));
+  I integrator({}, {}, T(1) / T(10));
   // Off the circle, or a velocity with a radial part: rejected with the size of the defect.
   CHECK_THROWS_AS(integrator.initial_state(vec<T, 2>(T(2), T(0)), vec<T, 2>(T(0), T(1))), std::invalid_argument);
   CHECK_THROWS_AS(integrator.initial_state(vec<T, 2>(T(1), T(0)), vec<T, 2>(T(1), T(1))), std::invalid_argument);
@@ -235,7 +235,7 @@ TEMPLATE_LIST_TEST_CASE("constrained LPF: bad input gets a clear error", "[const
   zero_iterations.max_iterations = 0;
   CHECK_THROWS_AS(I({}, {}, T(1) / T(10), zero_iterations), std::invalid_argument);
   // tau <= 0 and NaN state: integration_error naming the reason and the step.
-  const I zero_step({}, {}, T(0));
+  I zero_step({}, {}, T(0));
   auto s = integrator.initial_state(vec<T, 2>(T(1), T(0)), vec<T, 2>(T(0), T(1)));
   try {
     zero_step.step(s);

@@ -139,23 +139,23 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: integrators built one after the other 
                         "[lpf_fixed_point]", geomint::test::integrator_scalar_types) {
   // Two integrators of the same (T, m) built in turn share the computed coefficients and
   // nothing else: stepped alternately, each takes bit for bit the steps of the one built
-  // alone (12 steps of Kepler, e = 1/2, tau = 1/8; a continuing step reads its own engine's
-  // memory).
+  // alone (12 steps of Kepler, e = 1/2, tau = 1/8; a continuing step reads its own integrator's
+  // cache).
   using T = TestType;
   const auto start = kepler_start<T>();
   const T tau = T(1) / T(8);
   using kepler_integrator = integrator<lpf_fixed_point<8>, systems::kepler, T>;
   std::array<std::pair<vec<T, 2>, vec<T, 2>>, 12> alone;
   {
-    const kepler_integrator A(systems::kepler{}, tau);
+    kepler_integrator A(systems::kepler{}, tau);
     auto a = A.initial_state(start.first, start.second);
     for (auto& state : alone) {
       REQUIRE(A.try_step(a));
       state = {a.q, a.p};
     }
   }
-  const kepler_integrator B(systems::kepler{}, tau);
-  const kepler_integrator C(systems::kepler{}, tau);
+  kepler_integrator B(systems::kepler{}, tau);
+  kepler_integrator C(systems::kepler{}, tau);
   auto b = B.initial_state(start.first, start.second);
   auto c = C.initial_state(start.first, start.second);
   for (const auto& state : alone) {
@@ -240,8 +240,8 @@ TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: the sweep budget grows with the scalar
 
 TEMPLATE_LIST_TEST_CASE("lpf_fixed_point: continuing steps and fresh steps solve the same equations",
                         "[lpf_fixed_point]", geomint::test::integrator_scalar_types) {
-  // The step memory predicts a continuing step by extrapolating the previous stage forces; a
-  // fresh engine starts from the forces along the straight line. Both iterate to the fixed
+  // The step cache predicts a continuing step by extrapolating the previous stage forces; a
+  // fresh integrator starts from the forces along the straight line. Both iterate to the fixed
   // point, so the results agree to round-off (exact mathematics: the same fixed point).
   using T = TestType;
   const T tau = T(1) / T(10);

@@ -10,10 +10,21 @@
 ///   Springer 2006, section II.1.3; docs/results/analysis.md), so halving the step divides the
 ///   error by about 2^14; each run's error is measured against a run at a quarter of its step.
 /// The test process runs on the default 8 MiB stack.
+///
+/// The step cache (integrator::cache_type): the caller's, so that a const integrator serves
+/// several trajectories at once. Expected values: (1) an integrator is a function of its
+/// construction and of the cache a step is given, so steps with a cache of their own per
+/// trajectory are bit for bit those of an integrator used for that trajectory alone; (2) a cache
+/// only changes the start of the solve, so steps that never continue their cache's last step
+/// solve the same equations and agree to the solver's tolerance (exact mathematics: one
+/// solution).
+#include <array>
 #include <cmath>
+#include <tuple>
 
 #include "catch.hpp"
 #include "geomint/integrator.hpp"
+#include "geomint/mechanics/systems.hpp"
 #include "geomint/mechanics/zoo.hpp"
 #include "scalar_types.hpp"
 
@@ -101,6 +112,60 @@ TEST_CASE("step skeleton: outer solar system, lpf m = 8 in 50 digits, Newton mat
   INFO("observed order of the energy error " << energy_order);
   CHECK(energy_order >= T(12));
   CHECK(energy_order <= T(16));
+}
+
+/// The fixed-point form with the Newton form behind it (lpf on a natural system, Gauss-interior
+/// nodes) and the step skeleton alone (Newton on equispaced nodes), in double and 50 digits.
+template <class Scheme, class S>
+struct cache_case {
+  using scheme = Scheme;
+  using scalar = S;
+};
+using cache_cases = std::tuple<cache_case<lpf<4, gauss_interior>, double>,
+                               cache_case<lpf<4, gauss_interior>, boost::multiprecision::cpp_bin_float_50>,
+                               cache_case<lpf<3, equispaced>, double>,
+                               cache_case<lpf<3, equispaced>, boost::multiprecision::cpp_bin_float_50>>;
+
+TEMPLATE_LIST_TEST_CASE("step cache: one const integrator, a cache per trajectory", "[schemes][cache]", cache_cases) {
+  using S = typename TestType::scalar;
+  using pendulum_integrator = integrator<typename TestType::scheme, systems::pendulum, S>;
+  using state = typename pendulum_integrator::state;
+  const S tau = S(1) / S(8);
+  const std::array<S, 2> angles{S(1), S(1) / S(2)};
+  constexpr int steps = 12;
+
+  // Each trajectory alone, with the integrator's own cache.
+  std::array<std::array<state, steps>, 2> alone;
+  for (std::size_t k = 0; k < 2; ++k) {
+    pendulum_integrator I(systems::pendulum{}, tau);
+    state s = I.initial_state(vec<S, 1>(angles[k]), vec<S, 1>(S(0)));
+    for (state& out : alone[k]) {
+      REQUIRE(I.try_step(s));
+      out = s;
+    }
+  }
+
+  // Both at once through one const integrator: a cache each, then one cache shared (each step
+  // then starts fresh: its cache's last step is the other trajectory's).
+  const pendulum_integrator C(systems::pendulum{}, tau);
+  std::array<typename pendulum_integrator::cache_type, 2> own;
+  typename pendulum_integrator::cache_type shared;
+  std::array<state, 2> a, b;
+  for (std::size_t k = 0; k < 2; ++k) a[k] = b[k] = C.initial_state(vec<S, 1>(angles[k]), vec<S, 1>(S(0)));
+  S largest(0);
+  for (int i = 0; i < steps; ++i)
+    for (std::size_t k = 0; k < 2; ++k) {
+      REQUIRE(C.try_step(a[k], own[k]));
+      CHECK(a[k].q == alone[k][static_cast<std::size_t>(i)].q);
+      CHECK(a[k].p == alone[k][static_cast<std::size_t>(i)].p);
+      REQUIRE(C.try_step(b[k], shared));
+      using std::max;
+      largest = max(largest, max(abs_diff(b[k].q[0], a[k].q[0]), abs_diff(b[k].p[0], a[k].p[0])));
+    }
+  // Within 64 eps (|q|, |p| <= 1, 12 steps: the Newton tolerance is 64 eps per step, and the
+  // sweeps stop at the eps level).
+  INFO("largest difference, fresh against continuing steps: " << largest);
+  CHECK(largest <= eps_tol<S>(64) * S(steps));
 }
 
 }  // namespace step_skeleton_test

@@ -76,7 +76,7 @@ TEMPLATE_LIST_TEST_CASE("step monitor: an unresolved step is refused, the state 
   const vec<T, 1> q0(T(1)), v0(T(0));
 
   // Unmonitored: the step converges, and the energy changes by more than half its new value.
-  const I free_run(systems::pendulum{}, T(10));
+  I free_run(systems::pendulum{}, T(10));
   auto s = free_run.initial_state(q0, v0);
   const T e0 = free_run.energy(s);
   REQUIRE(free_run.try_step(s));
@@ -224,7 +224,7 @@ TEMPLATE_LIST_TEST_CASE("step monitor: the midpoint rule at tau = 100 is refused
   // tau = 100, 10 steps: the scheme's q(1000) is cos(10 theta) + sin(10 theta) with theta =
   // 2 atan 50, far from the flow's cos 1000 + sin 1000; the monitor refuses the first step.
   {
-    const I free_run(systems::harmonic{}, T(100));
+    I free_run(systems::harmonic{}, T(100));
     auto s = free_run.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(1)));
     free_run.advance(s, 10);
     const T theta = T(2) * atan(T(50));
@@ -316,7 +316,7 @@ TEST_CASE("newton_options: max_iterations and tolerance_ulps must be positive", 
 TEMPLATE_LIST_TEST_CASE("time is t0 + k tau, computed from k (not accumulated)", "[integrator]", geomint::test::integrator_scalar_types) {
   using T = TestType;
   const T tau = T(1) / T(10);
-  const integrator<midpoint_vi, systems::harmonic, T> I(systems::harmonic{}, tau);
+  integrator<midpoint_vi, systems::harmonic, T> I(systems::harmonic{}, tau);
   auto s = I.initial_state(vec<T, 1>(T(1)), vec<T, 1>(T(1)));
   s.t = T(3);  // the start time t_0; commit_step keeps it as the origin of t_0 + k tau
   for (int k = 1; k <= 1000; ++k) {

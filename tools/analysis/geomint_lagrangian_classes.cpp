@@ -26,7 +26,7 @@ void row(std::string_view system, std::string_view lagrangian_class, std::string
          const geomint::vec<T, Sys::dof>& v0) {
   std::cout << system << ',' << lagrangian_class << ',' << scheme << ',';
   try {
-    const geomint::integrator<Scheme, Sys, T> I(Sys{}, T(1) / T(4));
+    geomint::integrator<Scheme, Sys, T> I(Sys{}, T(1) / T(4));
     std::cout << static_cast<double>(geomint::analysis::symplecticity_defect(I, q0, v0, T(1) / T(4))) << '\n';
   } catch (const std::exception& e) {
     std::cout << "failed: " << e.what() << '\n';

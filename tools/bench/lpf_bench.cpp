@@ -45,7 +45,7 @@ T step_size() {
 
 template <class Scheme, class Sys, class T>
 void BM_step(benchmark::State& state) {
-  const geomint::integrator<Scheme, Sys, T> I(Sys{}, step_size<Sys, T>());
+  geomint::integrator<Scheme, Sys, T> I(Sys{}, step_size<Sys, T>());
   const auto [q0, v0] = initial<Sys, T>();
   auto s = I.initial_state(q0, v0);
   long iterations = 0, steps = 0;

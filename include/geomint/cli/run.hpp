@@ -114,7 +114,7 @@ struct error_estimate {
     factor = two_p / (two_p - T(1));
   }
   /// Two steps of tau/2; false (with the status in st) on failure.
-  bool advance(const any_stepper<T>& stepper, const T& tau, bool compensated, const newton_options<T>& opt,
+  bool advance(any_stepper<T>& stepper, const T& tau, bool compensated, const newton_options<T>& opt,
                step_status& st) {
     dynamic_vector<T> q1 = q, p1 = p;
     for (int half = 0; half < 2; ++half) {

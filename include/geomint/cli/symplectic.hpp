@@ -51,7 +51,7 @@ analysis::phase_vector<T> initial_state(List list, const std::string& system, co
 /// The one-step map of a stepper as a phase_map; the status of its last failed step goes to
 /// *failure (if given), so that a failure keeps its reason (e.g. the step monitor's criterion).
 template <class T>
-analysis::phase_map<T> as_map(const any_stepper<T>& stepper, const T& tau, step_status* failure = nullptr) {
+analysis::phase_map<T> as_map(any_stepper<T>& stepper, const T& tau, step_status* failure = nullptr) {
   return [&stepper, tau, failure](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
     const int n = stepper.dof();
     const dynamic_vector<T> q = z.head(n), p = z.tail(n);

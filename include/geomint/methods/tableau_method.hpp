@@ -51,6 +51,8 @@ class tableau_engine {
   using V = vec<T, n>;
   using stage_values = Eigen::Matrix<T, n, Eigen::Dynamic>;
   using unknowns = dynamic_vector<T>;
+  /// Nothing is carried from one step to the next (each step starts from its explicit predictor).
+  struct cache_type {};
 
   /// std::invalid_argument if the form needs a natural system (rkn, prk) and Sys is not one.
   tableau_engine(const Sys& sys, nystrom_form<T> form) : sys_(sys), f_(std::move(form)) {
@@ -76,7 +78,8 @@ class tableau_engine {
   /// receives the stage unknowns; `carry` selects compensated summation. On failure q1, p1 and
   /// carry are untouched.
   step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt,
-                       unknowns* solution = nullptr, phase_carry<T, n>* carry = nullptr) const {
+                       cache_type* = nullptr, unknowns* solution = nullptr,
+                       phase_carry<T, n>* carry = nullptr) const {
     opt.validate();
     if constexpr (natural_system<Sys>)
       return natural_step(q, p, tau, q1, p1, opt, solution, carry);

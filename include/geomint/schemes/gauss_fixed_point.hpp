@@ -32,7 +32,6 @@
 /// formed to twice the working precision before the compensated sum (stage_point, exact_update).
 
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -92,12 +91,11 @@ struct gauss_nystrom_coefficients : methods::symplectic_rkn<T, S> {
 };
 
 
-/// What the engine remembers of its last step (step_continuation, step_skeleton.hpp): the stage
-/// increments, to predict the next step's by extrapolation.
+/// The engine's cache (step_continuation, step_skeleton.hpp): the stage increments of the last
+/// step, to predict the next step's by extrapolation.
 template <class T, int n, int S>
-struct fixed_point_memory : step_continuation<T, n> {
-  /// Zero until a step records its own: an engine is copied into a stepper before its first
-  /// step, and the copy reads every member.
+struct fixed_point_cache : step_continuation<T, n> {
+  /// Zero until a step records its own (a copied cache reads every member).
   std::array<vec<T, n>, S> F = [] {
     std::array<vec<T, n>, S> zero;
     zero.fill(vec<T, n>::Zero());
@@ -116,6 +114,8 @@ class gauss_fixed_point_engine {
   using V = vec<T, n>;
   /// The unknowns: the stage momentum increments F_1..F_S.
   using unknowns = vec<T, S * n>;
+  /// What a caller keeps between steps (fixed_point_cache above).
+  using cache_type = fixed_point_cache<T, n, S>;
 
   explicit gauss_fixed_point_engine(const Sys& sys)
       : sys_(sys), k_(gauss_nystrom_coefficients<T, S>::make()), minv_(inverse_of<T, n>(Sys::template mass_matrix<T>())) {
@@ -150,15 +150,16 @@ class gauss_fixed_point_engine {
     return Y;
   }
 
-  /// (q_k, p_k) -> (q_{k+1}, p_{k+1}); `solution` (if not null) receives the stage increments;
-  /// `carry` selects compensated summation of the update (as step_skeleton::one_step). On
-  /// failure q1, p1 and carry are untouched. opt.max_iterations bounds the fixed-point
-  /// sweeps per 16 digits of T (sweep_budget).
+  /// (q_k, p_k) -> (q_{k+1}, p_{k+1}); `mem` (if not null) is the caller's cache: the stage
+  /// increments of its last step are extrapolated when this step continues it, and it then
+  /// holds this step; `solution` (if not null) receives the stage increments; `carry` selects
+  /// compensated summation of the update (as step_skeleton::one_step). On failure q1, p1 and
+  /// carry are untouched. opt.max_iterations bounds the fixed-point sweeps per 16 digits of T
+  /// (sweep_budget).
   step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt,
-                       unknowns* solution = nullptr, phase_carry<T, n>* carry = nullptr) const {
+                       cache_type* mem = nullptr, unknowns* solution = nullptr,
+                       phase_carry<T, n>* carry = nullptr) const {
     opt.validate();
-    try_lock_flag lock(memory_.busy);
-    fixed_point_memory<T, n, S>* mem = lock.owned() ? &memory_ : nullptr;
     const V v = inverse_mass(p);
     // Compensated summation: the state is (q + carry.q, p + carry.p). The stages and the update
     // see the carried parts (as in IRKGL16), so that the increments are those of the state the
@@ -544,7 +545,6 @@ class gauss_fixed_point_engine {
   std::array<std::array<T, H>, H> mirror_sum_{}, mirror_difference_{};
   /// mu, the extrapolation and M^{-1} in double, for the multiprecision steps (presolve_in_double).
   stages_in_double<Sys, S> in_double_;
-  mutable fixed_point_memory<T, n, S> memory_;
 };
 
 }  // namespace schemes::detail

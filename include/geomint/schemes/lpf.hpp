@@ -201,6 +201,11 @@ class lpf_natural_engine {
   using V = vec<T, n>;
   /// The path increments (as the Newton form's), so that dense output works with either solver.
   using unknowns = typename newton_engine::unknowns;
+  /// The caches of both forms (each holds the last step it took).
+  struct cache_type {
+    typename newton_engine::cache_type newton;
+    typename fixed_point_engine::cache_type fixed_point;
+  };
 
   lpf_natural_engine(const Sys& sys, const path_weights<T, M>& w, bool gauss_nodes)
       : newton_(method_type(sys, w)) {
@@ -214,11 +219,13 @@ class lpf_natural_engine {
   /// One step (as step_skeleton::one_step): the fixed-point form where it applies and
   /// converges, else Newton. `solution` receives the path increments either way.
   step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt,
-                       unknowns* solution = nullptr, phase_carry<T, n>* carry = nullptr) const {
+                       cache_type* mem = nullptr, unknowns* solution = nullptr,
+                       phase_carry<T, n>* carry = nullptr) const {
     if (fixed_point_) {
       typename fixed_point_engine::unknowns F;
       const std::optional<phase_carry<T, n>> start = carry ? std::optional<phase_carry<T, n>>(*carry) : std::nullopt;
-      const step_status st = fixed_point_->one_step(q, p, tau, q1, p1, opt, solution ? &F : nullptr, carry);
+      const step_status st =
+          fixed_point_->one_step(q, p, tau, q1, p1, opt, mem ? &mem->fixed_point : nullptr, solution ? &F : nullptr, carry);
       if (st) {
         if (solution) {
           const auto Y = fixed_point_->path_increments(p, tau, F, start ? &*start : nullptr);
@@ -227,7 +234,7 @@ class lpf_natural_engine {
         return st;
       }
     }
-    return newton_.one_step(q, p, tau, q1, p1, opt, solution, carry);
+    return newton_.one_step(q, p, tau, q1, p1, opt, mem ? &mem->newton : nullptr, solution, carry);
   }
 
   /// The two-step form's momentum at the end of the path through x0 and x1 (Newton, eq. 10-12).

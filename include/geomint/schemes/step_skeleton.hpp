@@ -4,9 +4,9 @@
 ///
 /// A scheme is a small *method* that supplies what one step solves: its unknowns, a predictor,
 /// its residual rows and its end update. The skeleton owns everything else: the packing of the
-/// path into unknowns, the step memory (the previous path extrapolated as the predictor, the
-/// factorised Newton matrix reused while it contracts), the simplified Newton solve and the
-/// failure reporting. A method `Method` provides
+/// path into unknowns, the use of a step cache (the previous path extrapolated as the predictor,
+/// the factorised Newton matrix reused while it contracts; the caller owns the cache and passes
+/// it to each step), the simplified Newton solve and the failure reporting. A method `Method` provides
 ///
 ///   using scalar = T;  static constexpr int dof, unknowns;
 ///   bool predict(q, p, tau, z)            fresh predictor; false if no velocity belongs to p
@@ -24,7 +24,6 @@
 /// and optionally `end_momentum(x0, x1, tau, p1, opt)` for the two-step form.
 
 #include <array>
-#include <atomic>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
@@ -206,38 +205,17 @@ vec<T, n> apply_end_update(const vec<T, n>& x, const vec<T, n>& u, bool is_incre
   return out;
 }
 
-/// Holds an atomic_flag for the lifetime of a scope if it was free.
-class try_lock_flag {
- public:
-  explicit try_lock_flag(std::atomic_flag& f) : flag_(f), owned_(!f.test_and_set(std::memory_order_acquire)) {}
-  ~try_lock_flag() {
-    if (owned_) flag_.clear(std::memory_order_release);
-  }
-  try_lock_flag(const try_lock_flag&) = delete;
-  try_lock_flag& operator=(const try_lock_flag&) = delete;
-  bool owned() const { return owned_; }
-
- private:
-  std::atomic_flag& flag_;
-  bool owned_;
-};
-
-/// Where an engine's last step ended (q1, p1 with step tau), to recognise a step that continues
-/// it. Guarded by a try-lock (`busy`): a call that finds it busy (the same engine used from
-/// another thread) simply does not use it. A copy starts empty. Engines derive from it and add
-/// what they carry over (step_memory below, schemes/gauss_fixed_point.hpp).
+/// Where the last step of a cache ended (q1, p1 with step tau), to recognise a step that
+/// continues it. The part of every engine's cache (`Engine::cache_type`) that says whether what
+/// it holds belongs to this step; engines derive from it and add what they carry over
+/// (step_cache below, schemes/gauss_fixed_point.hpp). A cache is plain data owned by its caller
+/// (the integrator, the stepper), as Eigen's decompositions are: one engine, shared or const,
+/// serves any number of caches, one per trajectory or thread.
 template <class T, int n>
 struct step_continuation {
-  std::atomic_flag busy;  // clear on construction (C++20)
   bool valid = false;
   T tau{};
   vec<T, n> q1, p1;
-  step_continuation() = default;
-  step_continuation(const step_continuation&) : step_continuation() {}
-  step_continuation& operator=(const step_continuation&) {
-    valid = false;
-    return *this;
-  }
   /// Whether a step from (q, p) with tau starts where the remembered one ended.
   bool continues(const vec<T, n>& q, const vec<T, n>& p, const T& step) const {
     return valid && step == tau && q == q1 && p == p1;
@@ -251,20 +229,13 @@ struct step_continuation {
   }
 };
 
-/// What the skeleton remembers of its last step, to start the next one well when it continues
-/// from where the last one ended (same q, p and tau): the solution, to extrapolate as the
-/// predictor, and the factorised Newton matrix, to reuse.
+/// The cache of the step skeleton: the last step's solution, to extrapolate as the predictor
+/// when the next step continues it (same q, p and tau), and the factorised Newton matrix, to
+/// reuse (factor once, solve many).
 template <class T, int n, int N>
-struct step_memory : step_continuation<T, n> {
-  vec<T, N> z;
+struct step_cache : step_continuation<T, n> {
+  vec<T, N> z = vec<T, N>::Zero();
   jacobian_cache<T, N> jacobian;
-  step_memory() = default;
-  step_memory(const step_memory&) : step_memory() {}
-  step_memory& operator=(const step_memory&) {
-    this->valid = false;
-    jacobian.valid = false;
-    return *this;
-  }
 };
 
 /// The generic implicit step over a method (see the top of this file).
@@ -284,18 +255,20 @@ class step_skeleton {
 
   const Method& method() const { return method_; }
 
+  /// The cache a caller keeps between steps (step_cache above).
+  using cache_type = step_cache<T, n, N>;
+
   /// (q_k, p_k) -> (q_{k+1}, p_{k+1}); `solution` (if not null) receives the unknowns at the
-  /// solution. Predictor: when the step continues the previous one (q_k, p_k and tau equal to
-  /// its result), the method's extrapolation of the previous solution, with the previous
-  /// factorised Newton matrix reused while it contracts well; otherwise the method's fresh
-  /// predictor and a fresh matrix. Either way the result solves the same equations to the
+  /// solution. Predictor: when the step continues the last one of `cache` (q_k, p_k and tau
+  /// equal to its result), the method's extrapolation of that step's solution, with its
+  /// factorised Newton matrix reused while it contracts well; otherwise (or with no cache) the
+  /// method's fresh predictor and a fresh matrix. The cache then holds this step. Either way the result solves the same equations to the
   /// Newton tolerance. `carry` (if not null) holds the compensation terms of (q, p) and selects
   /// compensated summation of the end update (phase_state.hpp, add_compensated); it receives
   /// those of (q1, p1). On failure q1, p1 and carry are untouched.
   step_status one_step(const V& q, const V& p, const T& tau, V& q1, V& p1, const newton_options<T>& opt,
-                       unknowns* solution = nullptr, phase_carry<T, n>* carry = nullptr) const {
-    try_lock_flag lock(memory_.busy);
-    step_memory<T, n, N>* mem = lock.owned() ? &memory_ : nullptr;
+                       cache_type* mem = nullptr, unknowns* solution = nullptr,
+                       phase_carry<T, n>* carry = nullptr) const {
     unknowns z;
     step_status st;
     bool done = false;
@@ -357,7 +330,6 @@ class step_skeleton {
   }
 
   Method method_;
-  mutable step_memory<T, n, N> memory_;
 };
 
 }  // namespace schemes::detail
