@@ -1,9 +1,9 @@
 /// Designing a scheme with the exact scheme algebra: among the symmetric LPF-type collocation
 /// schemes of degree m = 4 with rational interior nodes {a, 1/2, 1 - a}, a = k/40 (k = 1..19),
 /// find at compile time the one of highest order and, among those, smallest principal error
-/// constant; then integrate the pendulum with it (the RKN step of its tableau) and measure its
-/// order against the Taylor reference flow, next to the equispaced choice a = 1/4 (LPF m = 4).
-#include <array>
+/// constant; then integrate the pendulum with that tableau (the library's stepper of a method given
+/// as data) and measure its order against the Taylor reference flow, next to the equispaced choice
+/// a = 1/4 (LPF m = 4).
 #include <cmath>
 #include <iostream>
 
@@ -13,6 +13,7 @@
 #include <geomint/analysis/rkn_tableau.hpp>
 #include <geomint/analysis/scheme_structure.hpp>
 #include <geomint/mechanics/systems.hpp>
+#include <geomint/methods/tableau_stepper.hpp>
 
 namespace {
 
@@ -55,36 +56,6 @@ constexpr int best_k = table.best + 1;
 static_assert(table.symmetric[0] && table.symmetric[candidates - 1]);
 static_assert(table.order[table.best] == 4);
 
-/// One step of the RKN method (c, a, bbar, b) for q'' = -sin q: stages by fixed-point iteration.
-template <class T>
-void rkn_step(const geomint::methods::tableau_data<T>& t, const T& q, const T& p, const T& tau, T& q1, T& p1) {
-  using std::abs;
-  using std::sin;
-  const int s = t.stages;
-  std::array<T, geomint::max_exact_stages> Q{}, F{};
-  for (int i = 0; i < s; ++i) Q[i] = q + t.c[i] * tau * p;
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    for (int j = 0; j < s; ++j) F[j] = -sin(Q[j]);
-    T change(0);
-    for (int i = 0; i < s; ++i) {
-      T sum(0);
-      for (int j = 0; j < s; ++j) sum += t.a[i][j] * F[j];
-      const T next = q + t.c[i] * tau * p + tau * tau * sum;
-      change = std::max(change, T(abs(next - Q[i])));
-      Q[i] = next;
-    }
-    if (change <= 4 * std::numeric_limits<T>::epsilon()) break;
-  }
-  for (int j = 0; j < s; ++j) F[j] = -sin(Q[j]);
-  T sb(0), sbb(0);
-  for (int j = 0; j < s; ++j) {
-    sb += t.b[j] * F[j];
-    sbb += t.bbar[j] * F[j];
-  }
-  q1 = q + tau * p + tau * tau * sbb;
-  p1 = p + tau * sb;
-}
-
 /// Observed order of the scheme with nodes {k/40, 1/2, 1 - k/40} on the pendulum from q = 1 at
 /// rest, T = 2, N = 2..16 (double: at smaller steps the designed scheme's error reaches the
 /// order study's round-off margin).
@@ -94,13 +65,8 @@ geomint::analysis::order_result<double> measure(int k) {
   // usual (c, a, bbar, b) at the nodes (ascending).
   const double nodes[3] = {static_cast<double>(k) / grid, 0.5, static_cast<double>(grid - k) / grid};
   const auto t = geomint::numeric_tableau<double>(candidate(k), nodes);
-  an::step_function<double> step = [t](const an::dynamic_vector<double>& q, const an::dynamic_vector<double>& p,
-                                       const double& tau, an::dynamic_vector<double>& q1, an::dynamic_vector<double>& p1) {
-    q1.resize(1);
-    p1.resize(1);
-    rkn_step(t, q[0], p[0], tau, q1[0], p1[0]);
-    return true;
-  };
+  // The analysed tableau is the method that runs: one stepper of the library, no hand-written step.
+  const auto step = geomint::make_tableau_stepper<geomint::systems::pendulum, double>(geomint::methods::nystrom_form_of(t));
   an::reference_function<double> reference = [](const double& time, an::dynamic_vector<double>& q,
                                                 an::dynamic_vector<double>& p) {
     an::reference_flow<geomint::systems::pendulum, double> flow(geomint::vec<double, 1>(1.0), geomint::vec<double, 1>(0.0));
@@ -110,7 +76,7 @@ geomint::analysis::order_result<double> measure(int k) {
   };
   const an::dynamic_vector<double> q0 = an::dynamic_vector<double>::Constant(1, 1.0),
                                    p0 = an::dynamic_vector<double>::Constant(1, 0.0);
-  return an::order_study<double>(step, reference, q0, p0, 2.0, {2, 4, 8, 16});
+  return an::order_study<double>(*step, reference, q0, p0, 2.0, {2, 4, 8, 16});
 }
 
 }  // namespace

@@ -168,11 +168,7 @@ class constrained_integrator {
   }
 
   T energy(const state& s) const { return energy(s.q, s.p); }
-  T energy(const vector& q, const vector& p) const {
-    vector v;
-    if (!lagrangian_derivatives<Sys, T>::velocity(engine_.system(), q, p, v)) return std::numeric_limits<T>::quiet_NaN();
-    return energy_qv<Sys, T>(engine_.system(), q, v);
-  }
+  T energy(const vector& q, const vector& p) const { return energy_qp<Sys, T>(engine_.system(), q, p); }
   T violation(const state& s) const { return constraint_violation<Con, T, n>(engine_.constraints(), s.q); }
   /// max |G(q) qdot|: the hidden (velocity) constraint.
   T velocity_violation(const state& s) const {

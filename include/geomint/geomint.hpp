@@ -26,6 +26,7 @@
 #include "geomint/solvers/step_status.hpp"
 #include "geomint/solvers/step_monitor.hpp"
 #include "geomint/solvers/phase_state.hpp"
+#include "geomint/solvers/any_stepper.hpp"
 // mechanics: the system contract, Lagrangian derivatives, built-in systems and constraints
 #include "geomint/mechanics/lagrangian.hpp"
 #include "geomint/mechanics/constraint.hpp"

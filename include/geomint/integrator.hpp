@@ -61,6 +61,7 @@ class integrator {
   void set_tau(const T& tau) { tau_ = tau; }
   const Sys& system_ref() const { return sys_; }
   newton_options<T>& options() { return opt_; }
+  const newton_options<T>& options() const { return opt_; }
   /// The optional step monitor (off by default; see step_monitor.hpp). Validated when set; a
   /// max_tau_omega of 0 becomes the scheme's resolution bound (schemes/resolution.hpp).
   void set_monitor(const step_monitor<T>& m) {
@@ -198,11 +199,7 @@ class integrator {
 
   /// Energy qdot . dL/dqdot - L at (q, p) (inverse Legendre transform for qdot).
   T energy(const state& s) const { return energy(s.q, s.p); }
-  T energy(const vector& q, const vector& p) const {
-    vector v;
-    if (!lagrangian_derivatives<Sys, T>::velocity(sys_, q, p, v)) return std::numeric_limits<T>::quiet_NaN();
-    return energy_qv<Sys, T>(sys_, q, v);
-  }
+  T energy(const vector& q, const vector& p) const { return energy_qp<Sys, T>(sys_, q, p); }
 
  private:
   step_status check(long k, const vector& a, const vector& b) const { return check_step_input(k, tau_, a, b); }

@@ -1,11 +1,13 @@
 #pragma once
-/// A type-erased one-step map (q_k, p_k) -> (q_{k+1}, p_{k+1}) for a scheme chosen at run time
-/// by name: what a program needs that picks the scheme from a command line or a table (the
-/// tools, the studies). Every step runs the same checks as `integrator::try_step`
-/// (solvers/phase_state.hpp), and a failed step leaves (q1, p1) untouched.
+/// The one step interface (any_stepper, solvers/any_stepper.hpp) over the library's schemes: an
+/// integrator erased (`erase`), or a scheme chosen at run time by name (`make_stepper`), what a
+/// program needs that picks the scheme from a command line or a table (the tools, the studies).
+/// Every step runs the same checks as `integrator::try_step` (solvers/phase_state.hpp), and a
+/// failed step leaves (q1, p1) untouched.
 ///
 ///   auto s = geomint::make_stepper<geomint::systems::pendulum, double>({"lpf", "gauss_interior", "lagrange", 4});
 ///   geomint::step_status st = s->try_step(q, p, tau, q1, p1);
+///   auto e = geomint::erase(I);   // I: an integrator<Scheme, Sys, T>
 ///
 /// `make_stepper<Sys, T>` instantiates every scheme a spec can name for one (Sys, T): LPF for
 /// m = 2..8 on the six node families and both bases, Galerkin for m = 2..8, midpoint and
@@ -27,6 +29,7 @@
 #include "geomint/integrator.hpp"
 #include "geomint/schemes/lpf_fixed_point.hpp"
 #include "geomint/schemes/resolution.hpp"
+#include "geomint/solvers/any_stepper.hpp"
 #include "geomint/solvers/phase_state.hpp"
 
 namespace geomint {
@@ -57,45 +60,6 @@ struct scheme_spec {
     const auto family = canonical_node_family(nodes);
     return family ? std::string(*family) : nodes;
   }
-};
-
-/// The type-erased stepper over scalar T.
-template <class T>
-class any_stepper {
- public:
-  using vector = dynamic_vector<T>;
-  virtual ~any_stepper() = default;
-  virtual int dof() const = 0;
-  /// The scheme's name, e.g. "lpf(m=4, gauss-interior, lagrange)".
-  virtual std::string name() const = 0;
-  /// The step monitor applied by try_step (off unless set; see solvers/step_monitor.hpp). A
-  /// max_tau_omega of 0 becomes the scheme's resolution bound (schemes/resolution.hpp).
-  void set_monitor(const step_monitor<T>& m) {
-    m.validate();
-    monitor_ = m.for_scheme(resolution_bound_);
-  }
-  const step_monitor<T>& monitor() const { return monitor_; }
-  /// One step of size tau from (q, p); on failure q1 and p1 are untouched. A state of the wrong
-  /// dimension is a programming error (std::invalid_argument).
-  /// The stepper keeps its engine's cache (integrator::cache_type) from step to step, so a step
-  /// changes it: a stepper serves one trajectory at a time (make one per thread).
-  virtual step_status try_step(const vector& q, const vector& p, const T& tau, vector& q1, vector& p1,
-                               const newton_options<T>& opt = {}) = 0;
-  /// The same step with compensated summation of the end update (integrator::
-  /// set_compensated_summation): q_carry and p_carry are the compensation terms of (q, p) on
-  /// entry (zero to start) and of (q1, p1) on success; on failure all are untouched.
-  virtual step_status try_step_compensated(const vector& q, const vector& p, vector& q_carry, vector& p_carry,
-                                           const T& tau, vector& q1, vector& p1,
-                                           const newton_options<T>& opt = {}) = 0;
-  /// The energy at (q, p) (NaN where the Legendre transform cannot be inverted).
-  virtual T energy(const vector& q, const vector& p) const = 0;
-  /// p = dL/dqdot(q, qdot).
-  virtual vector momentum(const vector& q, const vector& qdot) const = 0;
-
- protected:
-  explicit any_stepper(const T& resolution_bound) : resolution_bound_(resolution_bound) {}
-  step_monitor<T> monitor_;
-  T resolution_bound_;  ///< the scheme's bound on tau * omega_max
 };
 
 namespace detail {
@@ -130,8 +94,14 @@ class engine_stepper : public any_stepper<T> {
   int dof() const override { return n; }
   std::string name() const override { return name_; }
 
-  step_status try_step(const vector& q, const vector& p, const T& tau, vector& q1, vector& p1,
-                       const newton_options<T>& opt) override {
+  T energy(const vector& q, const vector& p) const override { return energy_qp<Sys, T>(sys_, fixed(q), fixed(p)); }
+  vector momentum(const vector& q, const vector& qdot) const override {
+    return geomint::momentum<Sys, T>(sys_, fixed(q), fixed(qdot));
+  }
+
+ protected:
+  step_status step(const vector& q, const vector& p, const T& tau, vector& q1, vector& p1,
+                   const newton_options<T>& opt) override {
     phase_state<T, n> s;
     s.q = fixed(q);
     s.p = fixed(p);
@@ -146,8 +116,8 @@ class engine_stepper : public any_stepper<T> {
     }
     return done;
   }
-  step_status try_step_compensated(const vector& q, const vector& p, vector& q_carry, vector& p_carry, const T& tau,
-                                   vector& q1, vector& p1, const newton_options<T>& opt) override {
+  step_status step_compensated(const vector& q, const vector& p, vector& q_carry, vector& p_carry, const T& tau,
+                               vector& q1, vector& p1, const newton_options<T>& opt) override {
     phase_state<T, n> s;
     s.q = fixed(q);
     s.p = fixed(p);
@@ -168,22 +138,12 @@ class engine_stepper : public any_stepper<T> {
     }
     return done;
   }
-  T energy(const vector& q, const vector& p) const override { return energy_of(fixed(q), fixed(p)); }
-  vector momentum(const vector& q, const vector& qdot) const override {
-    return geomint::momentum<Sys, T>(sys_, fixed(q), fixed(qdot));
-  }
-
  private:
   static V fixed(const vector& x) {
     if (x.size() != n)
       throw std::invalid_argument("geomint::any_stepper: a vector of size " + std::to_string(x.size()) + " for a system with " +
                                   std::to_string(n) + " degrees of freedom");
     return V(x);
-  }
-  T energy_of(const V& q, const V& p) const {
-    V v;
-    if (!lagrangian_derivatives<Sys, T>::velocity(sys_, q, p, v)) return std::numeric_limits<T>::quiet_NaN();
-    return energy_qv<Sys, T>(sys_, q, v);
   }
   Sys sys_;
   Engine engine_;
@@ -211,6 +171,17 @@ template <class Scheme, class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_scheme_stepper(const Sys& sys = Sys{}) {
   return std::make_unique<detail::engine_stepper_of<Scheme, Sys, T>>(
       sys, typename Scheme::template engine<Sys, T>(sys), Scheme::name(), scheme_resolution_bound<Scheme, T>());
+}
+
+/// The integrator I, erased: a stepper of its scheme on its system, with its Newton options
+/// and its step monitor, and a cache of its own (I's cache and its compensated-summation
+/// switch stay with I; the stepper's compensated steps are try_step_compensated).
+template <class Scheme, class Sys, class T>
+std::unique_ptr<any_stepper<T>> erase(const integrator<Scheme, Sys, T>& I) {
+  auto s = make_scheme_stepper<Scheme, Sys, T>(I.system_ref());
+  s->set_options(I.options());
+  s->set_monitor(I.monitor());
+  return s;
 }
 
 /// The stepper named by `spec` on `sys`; std::invalid_argument for an unknown scheme, node

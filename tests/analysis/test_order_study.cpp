@@ -31,10 +31,10 @@ void rotate(const analysis::dynamic_vector<real>& q, const analysis::dynamic_vec
 template <class Angle>
 analysis::order_result<real> study(const Angle& angle, real t_end, const std::vector<long>& counts) {
   const analysis::dynamic_vector<real> q0 = analysis::dynamic_vector<real>::Constant(1, 1), p0 = q0;
-  analysis::step_function<real> step = [&](const auto& q, const auto& p, const real& tau, auto& q1, auto& p1) {
+  function_stepper<real> step(1, "rotation", [&](const auto& q, const auto& p, const real& tau, auto& q1, auto& p1) {
     rotate(q, p, angle(tau), q1, p1);
     return true;
-  };
+  });
   analysis::reference_function<real> reference = [&](const real& t, auto& q, auto& p) { rotate(q0, p0, t, q, p); };
   return analysis::order_study<real>(step, reference, q0, p0, t_end, counts);
 }

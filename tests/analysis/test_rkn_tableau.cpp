@@ -159,7 +159,7 @@ analysis::order_result<T> measured_orders() {
   };
   const analysis::dynamic_vector<T> q0 = analysis::dynamic_vector<T>::Constant(1, T(1)),
                                     p0 = analysis::dynamic_vector<T>::Constant(1, T(1) / T(2));
-  return analysis::order_study<T>(analysis::step_of(I), reference, q0, p0, T(1), {4, 8, 16});
+  return analysis::order_study<T>(*erase(I), reference, q0, p0, T(1), {4, 8, 16});
 }
 
 template <class Family, int M, int Last = max_exact_m>

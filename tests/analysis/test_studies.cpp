@@ -1,13 +1,12 @@
 /// Short versions of the order and symplecticity studies (the full tables: geomint-order and
 /// geomint-symplectic, docs/results/analysis.md).
-#include <memory>
-
 #include "catch.hpp"
 #include "geomint/analysis/exact_scheme.hpp"
 #include "geomint/analysis/order_study.hpp"
 #include "geomint/analysis/reference_flow.hpp"
 #include "geomint/analysis/symplecticity.hpp"
 #include "geomint/integrator.hpp"
+#include "geomint/stepper.hpp"
 #include "scalar_types.hpp"
 
 using namespace geomint;
@@ -16,30 +15,12 @@ using Pendulum = systems::pendulum;
 
 namespace {
 
-/// The one-step map of integrator<Scheme, Sys, T> in the form of the studies.
-template <class Scheme, class Sys>
-analysis::step_function<T> step_of(const integrator<Scheme, Sys, T>& I) {
-  auto stepper = std::make_shared<integrator<Scheme, Sys, T>>(I);
-  return [stepper](const analysis::dynamic_vector<T>& q, const analysis::dynamic_vector<T>& p, const T& tau,
-              analysis::dynamic_vector<T>& q1, analysis::dynamic_vector<T>& p1) {
-    typename integrator<Scheme, Sys, T>::state s;
-    s.q = q;
-    s.p = p;
-    stepper->set_tau(tau);
-    if (!stepper->try_step(s)) return false;
-    q1 = s.q;
-    p1 = s.p;
-    return true;
-  };
-}
-
 /// Observed global order of Scheme on the pendulum from theta = 1 at rest, T = 1, N = 8..64,
 /// against the Taylor reference flow in 100 digits.
 template <class Scheme>
 analysis::order_result<T> pendulum_orders(const std::vector<long>& counts) {
   using R = boost::multiprecision::cpp_bin_float_100;
-  integrator<Scheme, Pendulum, T> I;
-  analysis::step_function<T> step = step_of(I);
+  const auto stepper = erase(integrator<Scheme, Pendulum, T>());
   analysis::reference_function<T> reference = [](const T& t, analysis::dynamic_vector<T>& q,
                                                  analysis::dynamic_vector<T>& p) {
     analysis::reference_flow<Pendulum, R> flow(vec<R, 1>(R(1)), vec<R, 1>(R(0)));
@@ -49,7 +30,7 @@ analysis::order_result<T> pendulum_orders(const std::vector<long>& counts) {
   };
   const analysis::dynamic_vector<T> q0 = analysis::dynamic_vector<T>::Constant(1, T(1)),
                                     p0 = analysis::dynamic_vector<T>::Constant(1, T(0));
-  return analysis::order_study<T>(step, reference, q0, p0, T(1), counts);
+  return analysis::order_study<T>(*stepper, reference, q0, p0, T(1), counts);
 }
 
 template <class Scheme>
@@ -66,19 +47,10 @@ void check_orders(int expected_global) {
 /// The symplecticity defect of Scheme's one-step map on the pendulum at (q, p) = (1, 1/2), tau = 1/4.
 template <class Scheme>
 T pendulum_defect() {
-  integrator<Scheme, Pendulum, T> I(Pendulum{}, T(1) / T(4));
-  analysis::phase_map<T> map = [&I](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
-    typename integrator<Scheme, Pendulum, T>::state s;
-    s.q[0] = z[0];
-    s.p[0] = z[1];
-    if (!I.try_step(s)) return false;
-    z1.resize(2);
-    z1 << s.q[0], s.p[0];
-    return true;
-  };
+  const auto stepper = erase(integrator<Scheme, Pendulum, T>());
   analysis::phase_vector<T> z0(2);
   z0 << T(1), T(1) / T(2);
-  return analysis::symplectic_defect<T>(analysis::one_step_jacobian<T>(map, z0));
+  return analysis::symplectic_defect<T>(analysis::one_step_jacobian<T>(*stepper, T(1) / T(4), z0));
 }
 
 }  // namespace
@@ -97,14 +69,19 @@ TEST_CASE("symplectic defect of known matrices", "[analysis][symplectic]") {
   CHECK(analysis::symplectic_defect<T>(shear4) == T(0));
   CHECK(analysis::symplectic_defect<T>(stretch) == T(1));
   // The difference Jacobian of a linear map is the matrix itself (to round-off over delta).
-  analysis::phase_map<T> linear = [&](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
-    z1 = shear4 * z;
+  function_stepper<T> linear(2, "shear", [&](const dynamic_vector<T>& q, const dynamic_vector<T>& p, const T&,
+                                               dynamic_vector<T>& q1, dynamic_vector<T>& p1) {
+    analysis::phase_vector<T> z(4);
+    z << q, p;
+    const analysis::phase_vector<T> z1 = shear4 * z;
+    q1 = z1.head(2);
+    p1 = z1.tail(2);
     return true;
-  };
+  });
   analysis::phase_vector<T> z(4);
   z << T(1), T(2), T(3), T(4);
   using std::pow;
-  const T J_error = (analysis::one_step_jacobian<T>(linear, z) - shear4).cwiseAbs().maxCoeff();
+  const T J_error = (analysis::one_step_jacobian<T>(linear, T(1), z) - shear4).cwiseAbs().maxCoeff();
   CHECK(J_error <= T(64) * pow(std::numeric_limits<T>::epsilon(), T(4) / T(5)));
 }
 
@@ -142,14 +119,17 @@ TEST_CASE("observed orders on the pendulum", "[analysis][order]") {
 
 TEST_CASE("energy behaviour: slope and maximum", "[analysis][symplectic]") {
   // Exact mathematics: a map that adds tau to the "energy" z[0] each step drifts with slope 1.
-  analysis::phase_map<T> drift = [](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
-    z1 = z;
-    z1[0] += T(1) / T(4);
-    return true;
-  };
+  function_stepper<T> drift(
+      1, "drift",
+      [](const dynamic_vector<T>& q, const dynamic_vector<T>& p, const T&, dynamic_vector<T>& q1, dynamic_vector<T>& p1) {
+        q1 = q;
+        q1[0] += T(1) / T(4);
+        p1 = p;
+        return true;
+      },
+      [](const dynamic_vector<T>& q, const dynamic_vector<T>&) { return q[0]; });
   analysis::phase_vector<T> z0 = analysis::phase_vector<T>::Zero(2);
-  const auto r = analysis::energy_behaviour<T>(drift, [](const analysis::phase_vector<T>& z) { return z[0]; }, z0,
-                                               T(1) / T(4), 40);
+  const auto r = analysis::energy_behaviour<T>(drift, z0, T(1) / T(4), 40);
   CHECK(r.ok);
   CHECK(r.steps == 40);
   CHECK(geomint::test::abs_diff(r.max_error, T(10)) <= geomint::test::eps_tol<T>(16));

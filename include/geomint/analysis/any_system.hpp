@@ -25,6 +25,7 @@
 #include "geomint/core/checked_cast.hpp"
 #include "geomint/core/multiprecision.hpp"
 #include "geomint/integrator.hpp"
+#include "geomint/stepper.hpp"
 
 namespace geomint::analysis {
 
@@ -104,44 +105,6 @@ reference_function<T> galerkin_reference(const Sys& sys, const vec<T, Sys::dof>&
   };
 }
 
-/// One step of an integrator as the step_function of order_study.
-template <class Integrator>
-step_function<typename Integrator::scalar> step_of(const Integrator& base) {
-  using T = typename Integrator::scalar;
-  constexpr int n = Integrator::n;
-  return [base](const dynamic_vector<T>& q, const dynamic_vector<T>& p, const T& tau, dynamic_vector<T>& q1,
-                dynamic_vector<T>& p1) {
-    Integrator I = base;
-    I.set_tau(tau);
-    typename Integrator::state s;
-    s.q = vec<T, n>(q);
-    s.p = vec<T, n>(p);
-    if (!I.try_step(s)) return false;
-    q1 = s.q;
-    p1 = s.p;
-    return true;
-  };
-}
-
-/// The one-step map z = (q, p) -> z1 of an integrator at step tau, for one_step_jacobian.
-template <class Integrator>
-phase_map<typename Integrator::scalar> phase_map_of(const Integrator& base, const typename Integrator::scalar& tau) {
-  using T = typename Integrator::scalar;
-  constexpr int n = Integrator::n;
-  return [base, tau](const phase_vector<T>& z, phase_vector<T>& z1) {
-    Integrator I = base;
-    I.set_tau(tau);
-    typename Integrator::state s;
-    s.q = z.head(n);
-    s.p = z.tail(n);
-    if (!I.try_step(s)) return false;
-    z1.resize(2 * n);
-    z1.head(n) = s.q;
-    z1.tail(n) = s.p;
-    return true;
-  };
-}
-
 /// Observed local and global orders of an integrator on its own system from (q0, qdot0) up to
 /// t_end, against galerkin_reference (the integrator's tau is not used).
 template <class Integrator>
@@ -152,7 +115,7 @@ order_result<typename Integrator::scalar> study_order(const Integrator& I, const
   using T = typename Integrator::scalar;
   const auto s0 = I.initial_state(q0, qdot0);
   const auto reference = galerkin_reference<typename Integrator::system, T>(I.system_ref(), s0.q, s0.p);
-  return order_study<T>(step_of(I), reference, dynamic_vector<T>(s0.q), dynamic_vector<T>(s0.p), t_end, step_counts);
+  return order_study<T>(*erase(I), reference, dynamic_vector<T>(s0.q), dynamic_vector<T>(s0.p), t_end, step_counts);
 }
 
 /// max |J^T Omega J - Omega| of one step of size tau from (q0, qdot0): zero (to the accuracy of
@@ -167,7 +130,7 @@ typename Integrator::scalar symplecticity_defect(const Integrator& I, const vec<
   phase_vector<T> z(2 * n);
   z.head(n) = s0.q;
   z.tail(n) = s0.p;
-  return symplectic_defect<T>(one_step_jacobian<T>(phase_map_of(I, tau), z));
+  return symplectic_defect<T>(one_step_jacobian<T>(*erase(I), tau, z));
 }
 
 }  // namespace geomint::analysis

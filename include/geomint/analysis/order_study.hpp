@@ -23,15 +23,12 @@
 #include <Eigen/Dense>
 
 #include "geomint/linalg/types.hpp"
+#include "geomint/solvers/any_stepper.hpp"
 
 namespace geomint::analysis {
 
 using geomint::dynamic_vector;
 
-/// One step (q, p) -> (q1, p1) of size tau; returns false (or throws) on failure.
-template <class T>
-using step_function = std::function<bool(const dynamic_vector<T>& q, const dynamic_vector<T>& p, const T& tau,
-                                         dynamic_vector<T>& q1, dynamic_vector<T>& p1)>;
 /// The exact state (q, p) at time t from the common initial state.
 template <class T>
 using reference_function = std::function<void(const T& t, dynamic_vector<T>& q, dynamic_vector<T>& p)>;
@@ -59,9 +56,10 @@ T observed_slope(const T& e0, const T& e1, const T& t0, const T& t1) {
   return log(e0 / e1) / log(t0 / t1);
 }
 
-/// Local and global errors of `step` at tau = t_end / N for N in `step_counts` (increasing).
+/// Local and global errors of the stepper's map at tau = t_end / N for N in `step_counts`
+/// (increasing). A failed step ends the study with its step_status message in `failure`.
 template <class T>
-order_result<T> order_study(const step_function<T>& step, const reference_function<T>& reference,
+order_result<T> order_study(any_stepper<T>& stepper, const reference_function<T>& reference,
                             const dynamic_vector<T>& q0, const dynamic_vector<T>& p0, const T& t_end,
                             const std::vector<long>& step_counts) {
   if (step_counts.size() < 2) throw std::invalid_argument("geomint::order_study: needs at least two step counts");
@@ -85,8 +83,8 @@ order_result<T> order_study(const step_function<T>& step, const reference_functi
   for (long N : step_counts) {
     const T tau = t_end / T(N);
     // Local error: one step against the reference flow at tau.
-    if (!step(q0, p0, tau, q1, p1)) {
-      r.failure = "step failed at tau = T/" + std::to_string(N);
+    if (const step_status st = stepper.try_step(q0, p0, tau, q1, p1); !st) {
+      r.failure = "step failed at tau = T/" + std::to_string(N) + " (" + st.message() + ")";
       return r;
     }
     reference(tau, qe, pe);
@@ -94,8 +92,8 @@ order_result<T> order_study(const step_function<T>& step, const reference_functi
     // Global error at t_end.
     dynamic_vector<T> q = q0, p = p0;
     for (long k = 0; k < N; ++k) {
-      if (!step(q, p, tau, q1, p1)) {
-        r.failure = "step " + std::to_string(k) + " failed at tau = T/" + std::to_string(N);
+      if (const step_status st = stepper.try_step(q, p, tau, q1, p1); !st) {
+        r.failure = "step " + std::to_string(k) + " failed at tau = T/" + std::to_string(N) + " (" + st.message() + ")";
         return r;
       }
       q = q1;

@@ -1,5 +1,6 @@
 #pragma once
-/// Symplecticity and long-time energy behaviour of a one-step map z = (q, p) -> Phi(z).
+/// Symplecticity and long-time energy behaviour of a stepper's one-step map z = (q, p) -> Phi_tau(z)
+/// (any_stepper, solvers/any_stepper.hpp).
 ///
 /// - `one_step_jacobian`: J = dPhi/dz by central differences with one Richardson extrapolation,
 ///   error O(delta^4) + O(eps/delta); delta = eps^(1/5) balances both, so in 50-digit arithmetic
@@ -9,11 +10,14 @@
 /// - `energy_behaviour`: max |H - H0| over a run and the least-squares slope of H - H0 in t.
 
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include <Eigen/Dense>
+
+#include "geomint/solvers/any_stepper.hpp"
 
 namespace geomint::analysis {
 
@@ -21,9 +25,23 @@ template <class T>
 using phase_vector = Eigen::Matrix<T, Eigen::Dynamic, 1>;
 template <class T>
 using phase_matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
-/// Phi: z = (q, p) -> z1; returns false on failure.
+namespace detail {
+/// One step of the stepper from z = (q, p) into z1.
 template <class T>
-using phase_map = std::function<bool(const phase_vector<T>& z, phase_vector<T>& z1)>;
+step_status phase_step(any_stepper<T>& stepper, const T& tau, const phase_vector<T>& z, phase_vector<T>& z1) {
+  const int n = stepper.dof();
+  if (z.size() != 2 * n)
+    throw std::invalid_argument("geomint::analysis: a phase vector of size " + std::to_string(z.size()) + " for " +
+                                std::to_string(n) + " degrees of freedom");
+  dynamic_vector<T> q1, p1;
+  const step_status st = stepper.try_step(dynamic_vector<T>(z.head(n)), dynamic_vector<T>(z.tail(n)), tau, q1, p1);
+  if (st) {
+    z1.resize(2 * n);
+    z1 << q1, p1;
+  }
+  return st;
+}
+}  // namespace detail
 
 /// The canonical structure matrix Omega = [[0, I], [-I, 0]] of dimension 2n.
 template <class T>
@@ -43,9 +61,9 @@ T default_difference_step() {
   return pow(std::numeric_limits<T>::epsilon(), T(1) / T(5));
 }
 
-/// J = dPhi/dz at z. Throws std::runtime_error if the map fails near z.
+/// J = dPhi_tau/dz at z. Throws std::runtime_error with the step's reason if the map fails near z.
 template <class T>
-phase_matrix<T> one_step_jacobian(const phase_map<T>& map, const phase_vector<T>& z,
+phase_matrix<T> one_step_jacobian(any_stepper<T>& stepper, const T& tau, const phase_vector<T>& z,
                                   const T& delta = default_difference_step<T>()) {
   if (!(delta > T(0))) throw std::invalid_argument("geomint::one_step_jacobian: delta must be > 0");
   const Eigen::Index d = z.size();
@@ -55,8 +73,9 @@ phase_matrix<T> one_step_jacobian(const phase_map<T>& map, const phase_vector<T>
     phase_vector<T> zp = z, zm = z;
     zp[j] += h;
     zm[j] -= h;
-    if (!map(zp, plus) || !map(zm, minus))
-      throw std::runtime_error("geomint::one_step_jacobian: the map failed at a perturbed state");
+    for (const auto& [from, to] : {std::pair{&zp, &plus}, std::pair{&zm, &minus}})
+      if (const step_status st = detail::phase_step(stepper, tau, *from, *to); !st)
+        throw std::runtime_error("geomint::one_step_jacobian: the map failed at a perturbed state: " + st.message());
     return phase_vector<T>((plus - minus) / (T(2) * h));
   };
   for (Eigen::Index j = 0; j < d; ++j) {
@@ -82,13 +101,18 @@ struct energy_result {
   T drift = T(0);      ///< least-squares slope of H_k - H_0 against t_k
   long steps = 0;      ///< steps completed
   bool ok = true;
+  phase_vector<T> last;  ///< the state after the last completed step
+  std::string failure;   ///< the failed step's reason, if !ok
 };
 
-/// Runs `steps` steps of size tau from z0 and summarises H_k - H_0.
+/// Runs `steps` steps of size tau from z0 and summarises H_k - H_0, H the stepper's energy.
 template <class T>
-energy_result<T> energy_behaviour(const phase_map<T>& map, const std::function<T(const phase_vector<T>&)>& energy,
-                                  const phase_vector<T>& z0, const T& tau, long steps) {
+energy_result<T> energy_behaviour(any_stepper<T>& stepper, const phase_vector<T>& z0, const T& tau, long steps) {
   if (!(tau > T(0))) throw std::invalid_argument("geomint::energy_behaviour: tau must be > 0");
+  const int n = stepper.dof();
+  auto energy = [&](const phase_vector<T>& z) {
+    return stepper.energy(dynamic_vector<T>(z.head(n)), dynamic_vector<T>(z.tail(n)));
+  };
   energy_result<T> r;
   const T h0 = energy(z0);
   phase_vector<T> z = z0, z1;
@@ -97,8 +121,9 @@ energy_result<T> energy_behaviour(const phase_map<T>& map, const std::function<T
   long count = 1;
   for (long done = 0; done < steps; ++done) {  // k = done + 1 <= steps: no overflow, also for steps = LONG_MAX
     const long k = done + 1;
-    if (!map(z, z1)) {
+    if (const step_status status = detail::phase_step(stepper, tau, z, z1); !status) {
       r.ok = false;
+      r.failure = status.message();
       break;
     }
     z = z1;
@@ -116,6 +141,7 @@ energy_result<T> energy_behaviour(const phase_map<T>& map, const std::function<T
   const T c = T(count);
   const T denominator = c * stt - st * st;
   r.drift = denominator > T(0) ? (c * sty - st * sy) / denominator : T(0);
+  r.last = z;
   return r;
 }
 

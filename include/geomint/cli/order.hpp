@@ -200,19 +200,6 @@ int run(const std::string& program, const selection<List>& sel, const T& t_end, 
       const auto& ref = refs.at(c.system);
       auto [q0, qdot0] = default_initial_data<T>(list, c.system);
       const analysis::dynamic_vector<T> q0d = q0, p0d = stepper->momentum(q0, qdot0);
-      std::string step_failure;
-      analysis::step_function<T> step = [&](const analysis::dynamic_vector<T>& q, const analysis::dynamic_vector<T>& p,
-                                            const T& tau, analysis::dynamic_vector<T>& q1, analysis::dynamic_vector<T>& p1) {
-        dynamic_vector<T> a, b;
-        const step_status st = stepper->try_step(q, p, tau, a, b);
-        if (!st) {
-          step_failure = st.message();  // the reason, for the report below
-          return false;
-        }
-        q1 = a;
-        p1 = b;
-        return true;
-      };
       analysis::reference_function<T> reference = [&](const T& t, analysis::dynamic_vector<T>& q,
                                                       analysis::dynamic_vector<T>& p) {
         long key = -1;
@@ -223,8 +210,7 @@ int run(const std::string& program, const selection<List>& sel, const T& t_end, 
         q = qp.first;
         p = qp.second;
       };
-      results[i] = analysis::order_study<T>(step, reference, q0d, p0d, t_end, counts);
-      if (!results[i].ok && !step_failure.empty()) results[i].failure += " (" + step_failure + ")";
+      results[i] = analysis::order_study<T>(*stepper, reference, q0d, p0d, t_end, counts);
     } catch (const std::exception& e) {
       results[i].failure = e.what();
     }

@@ -48,25 +48,6 @@ analysis::phase_vector<T> initial_state(List list, const std::string& system, co
   return z;
 }
 
-/// The one-step map of a stepper as a phase_map; the status of its last failed step goes to
-/// *failure (if given), so that a failure keeps its reason (e.g. the step monitor's criterion).
-template <class T>
-analysis::phase_map<T> as_map(any_stepper<T>& stepper, const T& tau, step_status* failure = nullptr) {
-  return [&stepper, tau, failure](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
-    const int n = stepper.dof();
-    const dynamic_vector<T> q = z.head(n), p = z.tail(n);
-    dynamic_vector<T> q1, p1;
-    const step_status st = stepper.try_step(q, p, tau, q1, p1);
-    if (!st) {
-      if (failure) *failure = st;
-      return false;
-    }
-    z1.resize(2 * n);
-    z1 << q1, p1;
-    return true;
-  };
-}
-
 struct row {
   std::string defect = "nan", max_energy = "nan", drift = "nan", failure, regime = "ok";
   std::string defect_estimate = "nan", state_estimate = "nan";
@@ -93,16 +74,6 @@ inline std::string fitted_order(double d0, double d1, double tau0, double tau1) 
   std::ostringstream out;
   out << std::fixed << std::setprecision(2) << std::log(d1 / d0) / std::log(tau1 / tau0);
   return out.str();
-}
-
-/// The map, recording the last state it produced (the end of a run through energy_behaviour).
-template <class T>
-analysis::phase_map<T> recording(analysis::phase_map<T> map, analysis::phase_vector<T>& last) {
-  return [map = std::move(map), &last](const analysis::phase_vector<T>& z, analysis::phase_vector<T>& z1) {
-    if (!map(z, z1)) return false;
-    last = z1;
-    return true;
-  };
 }
 
 template <class T>
@@ -142,16 +113,10 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
       const auto stepper = make_stepper<T>(list, c.system, c.spec);
       if (x.monitor) stepper->set_monitor(step_monitor<T>::on());
       const analysis::phase_vector<T> z0 = initial_state<T>(list, c.system, *stepper, x);
-      step_status failed;
-      analysis::phase_matrix<T> J;
-      analysis::phase_matrix<T> J2;  // with the difference step doubled: the defect's estimate
-      try {
-        J = analysis::one_step_jacobian<T>(as_map<T>(*stepper, tau, &failed), z0);
-        J2 = analysis::one_step_jacobian<T>(as_map<T>(*stepper, tau, &failed), z0,
-                                            T(2) * analysis::default_difference_step<T>());
-      } catch (const std::runtime_error& e) {
-        throw std::runtime_error(failed ? std::string(e.what()) : std::string(e.what()) + ": " + failed.message());
-      }
+      const analysis::phase_matrix<T> J = analysis::one_step_jacobian<T>(*stepper, tau, z0);
+      // With the difference step doubled: the defect's estimate.
+      const analysis::phase_matrix<T> J2 =
+          analysis::one_step_jacobian<T>(*stepper, tau, z0, T(2) * analysis::default_difference_step<T>());
       const T defect = analysis::symplectic_defect<T>(J);
       r.defect = sci(defect);
       r.defect_value = static_cast<double>(defect);
@@ -166,32 +131,20 @@ int run(const std::string& program, const selection<List>& sel, const extra_opti
         const auto fast = make_stepper<double>(list, c.system, c.spec);
         if (x.monitor) fast->set_monitor(step_monitor<double>::on());
         const analysis::phase_vector<double> zd = initial_state<double>(list, c.system, *fast, x);
-        const int n = fast->dof();
-        step_status long_failure;
-        const std::function<double(const analysis::phase_vector<double>&)> energy =
-            [&](const analysis::phase_vector<double>& z) {
-              return fast->energy(dynamic_vector<double>(z.head(n)), dynamic_vector<double>(z.tail(n)));
-            };
-        analysis::phase_vector<double> end = zd, end_half = zd;
-        const auto e = analysis::energy_behaviour<double>(recording(as_map<double>(*fast, long_tau, &long_failure), end),
-                                                          energy, zd, long_tau, x.long_steps);
-        if (!e.ok)
-          r.failure = "long run failed after " + std::to_string(e.steps) + " steps: " + long_failure.message();
+        const auto e = analysis::energy_behaviour<double>(*fast, zd, long_tau, x.long_steps);
+        if (!e.ok) r.failure = "long run failed after " + std::to_string(e.steps) + " steps: " + e.failure;
         r.max_energy = sci(e.max_error);
         r.drift = sci(e.drift);
         if (e.ok) {
           // The same run at tau/2: Richardson's estimate of the global error at t = N tau,
           // |z(tau) - z(tau/2)| 2^p / (2^p - 1) <= 2 |z(tau) - z(tau/2)| for every order p >= 1.
-          const auto half = analysis::energy_behaviour<double>(
-              recording(as_map<double>(*fast, long_tau / 2, &long_failure), end_half), energy, zd, long_tau / 2,
-              2 * x.long_steps);
+          const auto half = analysis::energy_behaviour<double>(*fast, zd, long_tau / 2, 2 * x.long_steps);
           if (!half.ok) {
-            r.failure = "the run at tau/2 (error estimate) failed after " + std::to_string(half.steps) +
-                        " steps: " + long_failure.message();
+            r.failure = "the run at tau/2 (error estimate) failed after " + std::to_string(half.steps) + " steps: " + half.failure;
           } else {
-            const double estimate = 2 * (end - end_half).lpNorm<Eigen::Infinity>();
+            const double estimate = 2 * (e.last - half.last).template lpNorm<Eigen::Infinity>();
             r.state_estimate = sci(estimate);
-            r.coarse = !(estimate <= end_half.lpNorm<Eigen::Infinity>() / 100);
+            r.coarse = !(estimate <= half.last.template lpNorm<Eigen::Infinity>() / 100);
           }
         }
       }

@@ -459,6 +459,15 @@ T energy_qv(const Sys& sys, const vec<T, Sys::dof>& q, const vec<T, Sys::dof>& q
   return T(qdot.dot(g.Lv) - g.L);
 }
 
+/// The energy at (q, p): qdot from p by the inverse Legendre transform, then energy_qv; NaN where
+/// the transform cannot be inverted.
+template <lagrangian_system Sys, class T>
+T energy_qp(const Sys& sys, const vec<T, Sys::dof>& q, const vec<T, Sys::dof>& p) {
+  vec<T, Sys::dof> v;
+  if (!lagrangian_derivatives<Sys, T>::velocity(sys, q, p, v)) return std::numeric_limits<T>::quiet_NaN();
+  return energy_qv<Sys, T>(sys, q, v);
+}
+
 /// How far a natural system's own potential_gradient is from the gradient of its potential at q
 /// (AD on V): max_i |supplied_i - (grad V)_i| in units of eps max(1, |grad V|). A correct hook
 /// gives a few units (the two roundings); a wrong one gives a large number. Test your hook with it.

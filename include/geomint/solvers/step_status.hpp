@@ -22,6 +22,7 @@ enum class step_failure {
   no_convergence,      ///< the iteration budget ran out
   energy_growth,       ///< the energy left the bound the options set: the step is outside the scheme's regime
   left_regime,         ///< the step monitor refused the converged step (see step_monitor.hpp)
+  map_failed,          ///< a user's one-step map reported a failure (function_stepper, solvers/any_stepper.hpp)
 };
 
 inline std::string_view to_string(step_failure f) {
@@ -35,6 +36,7 @@ inline std::string_view to_string(step_failure f) {
     case step_failure::no_convergence: return "the iteration (Newton or fixed-point) did not converge";
     case step_failure::energy_growth: return "the energy grew beyond its limit (step outside the scheme's stable regime)";
     case step_failure::left_regime: return "step left the scheme's regime (the step monitor refused it; reduce tau)";
+    case step_failure::map_failed: return "the one-step map reported a failure";
   }
   return "unknown";
 }
