@@ -28,15 +28,14 @@
 #include "geomint/core/dispatch.hpp"
 #include "geomint/integrator.hpp"
 #include "geomint/schemes/lpf_fixed_point.hpp"
+#include "geomint/schemes/registry.hpp"
 #include "geomint/schemes/resolution.hpp"
 #include "geomint/solvers/any_stepper.hpp"
 #include "geomint/solvers/phase_state.hpp"
 
 namespace geomint {
 
-/// The schemes a stepper can be made of, and the range of m it accepts.
-inline constexpr std::array<std::string_view, 5> scheme_names = {"lpf", "lpf-fixed-point", "midpoint", "trapezoidal",
-                                                                  "galerkin"};
+/// The range of m a stepper accepts (the schemes it can be made of: schemes/registry.hpp).
 inline constexpr int stepper_min_m = 2;
 inline constexpr int stepper_max_m = 8;
 /// Why lpf-fixed-point has no stepper on a system that is not natural.
@@ -51,12 +50,16 @@ struct scheme_spec {
   std::string nodes = "equispaced";
   std::string basis = "lagrange";
   int m = 2;
-  /// Whether the scheme has an m (midpoint and trapezoidal have none).
-  bool has_m() const { return scheme == "lpf" || scheme == "lpf-fixed-point" || scheme == "galerkin"; }
+  /// Whether the scheme has an m (midpoint and trapezoidal have none; schemes/registry.hpp).
+  bool has_m() const {
+    const scheme_entry* e = find_scheme(scheme);
+    return e && e->has_m;
+  }
   /// The node family column of tables: the printed family name, or "-" where it does not apply.
   std::string nodes_label() const {
-    if (scheme == "lpf-fixed-point") return std::string(gauss_interior::name);
-    if (scheme != "lpf") return "-";
+    const scheme_entry* e = find_scheme(scheme);
+    if (e && !e->fixed_nodes.empty()) return std::string(e->fixed_nodes);
+    if (!e || !e->has_nodes) return "-";
     const auto family = canonical_node_family(nodes);
     return family ? std::string(*family) : nodes;
   }
@@ -212,7 +215,8 @@ std::unique_ptr<any_stepper<T>> make_stepper(const scheme_spec& spec, const Sys&
         return with_basis(spec.basis, [&]<class Basis>() { return make.template operator()<lpf<M, Family, Basis>>(); });
       });
     });
-  throw std::invalid_argument("unknown scheme '" + spec.scheme + "' (lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin)");
+  throw std::invalid_argument("unknown scheme '" + spec.scheme + "' (" +
+                              scheme_names_where([](const scheme_entry&) { return true; }, "|", "|") + ")");
 }
 
 }  // namespace geomint

@@ -3,6 +3,7 @@
 /// against exact flows); the error cases against the documented contract.
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 #include "catch.hpp"
@@ -86,4 +87,31 @@ TEST_CASE("stepper: unknown names and m out of range are errors; a failed step l
   CHECK(q1[0] == 7.0);
   const dynamic_vector<double> wrong_size = dynamic_vector<double>::Zero(3);
   CHECK_THROWS_AS(stepper->try_step(wrong_size, wrong_size, 0.1, q1, p1), std::invalid_argument);
+}
+
+TEST_CASE("stepper: the scheme registry and make_stepper know the same schemes", "[stepper][registry]") {
+  // The registry (schemes/registry.hpp) is the one list of the built-in schemes: every entry is
+  // a stepper on a natural system at every m in stepper_min_m..stepper_max_m where it has an m,
+  // and a name outside it is refused with the registry's names in the message.
+  using S = systems::kepler;  // the factory of the tests above
+  for (const scheme_entry& e : scheme_registry) {
+    INFO(e.name);
+    const std::string name(e.name);
+    for (int m = stepper_min_m; m <= stepper_max_m; ++m) {
+      const auto stepper = make_stepper<S, double>({name, "equispaced", "lagrange", m});
+      REQUIRE(stepper);
+      if (!e.has_m) break;  // its m is ignored
+    }
+    CHECK(scheme_spec{name}.has_m() == e.has_m);
+    if (e.has_m) CHECK_THROWS_AS((make_stepper<S, double>({name, "equispaced", "lagrange", stepper_max_m + 1})), std::invalid_argument);
+  }
+  try {
+    (void)make_stepper<S, double>({"rk4", "equispaced", "lagrange", 2});
+    FAIL("no exception");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()) == "unknown scheme 'rk4' (lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin)");
+  }
+  CHECK(scheme_names_where([](const scheme_entry& e) { return e.has_m; }, ", ", " and ") == "lpf, lpf-fixed-point and galerkin");
+  CHECK(scheme_names_where([](const scheme_entry& e) { return e.has_nodes; }, ", ", " and ") == "lpf");
+  CHECK(find_scheme("rk4") == nullptr);
 }

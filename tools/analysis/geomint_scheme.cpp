@@ -42,6 +42,7 @@
 #include "geomint/analysis/scheme_structure.hpp"
 #include "geomint/methods/catalogue.hpp"
 #include "geomint/methods/tableau_file.hpp"
+#include "geomint/schemes/registry.hpp"
 
 namespace {
 
@@ -199,7 +200,7 @@ struct options {
 
 int two_step(const options& o) {
   if (o.csv) std::cout << "m,numerator,denominator,order,leading_coefficient\n";
-  const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
+  const bool single = !find_scheme(o.scheme)->has_m;
   for (const std::string& family : o.families)
     for (int m = o.m_first; m <= (single ? o.m_first : o.m_last); ++m) {
       const linear_stability_result r = linear_stability(tableau_of(o.scheme, family, m));
@@ -361,8 +362,8 @@ int analyse_file(const options& o, const methods::tableau_data<methods::field_el
 
 int analyse(const options& o) {
   if (o.csv) std::cout << analyse_header;
-  const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
-  const std::vector<std::string> families = o.scheme == "lpf" ? o.families : std::vector<std::string>{"-"};
+  const bool single = !find_scheme(o.scheme)->has_m;
+  const std::vector<std::string> families = takes_nodes(o.scheme) ? o.families : std::vector<std::string>{"-"};
   for (const std::string& family : families)
     for (int m = o.m_first; m <= (single ? o.m_first : o.m_last); ++m) {
       const exact_rkn_tableau t = tableau_of(o.scheme, family, m);
@@ -407,7 +408,7 @@ int analyse(const options& o) {
 void print_one_tableau(const options& o, const std::string& family, int m) {
   const exact_rkn_tableau t = tableau_of(o.scheme, family, m);
   const int s = t.stages;
-  const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
+  const bool single = !find_scheme(o.scheme)->has_m;
   std::cout << "scheme " << o.scheme << (o.scheme == "lpf" ? " " + family : std::string())
             << (single ? std::string() : " m = " + std::to_string(m)) << ", " << s << " stages\n";
   if (t.basis == stage_basis::monomial) {
@@ -443,8 +444,8 @@ void print_one_tableau(const options& o, const std::string& family, int m) {
 }
 
 int print_tableau(const options& o) {
-  const bool single = o.scheme == "midpoint" || o.scheme == "trapezoidal";
-  const std::vector<std::string> families = o.scheme == "lpf" ? o.families : std::vector<std::string>{"-"};
+  const bool single = !find_scheme(o.scheme)->has_m;
+  const std::vector<std::string> families = takes_nodes(o.scheme) ? o.families : std::vector<std::string>{"-"};
   for (const std::string& family : families)
     for (int m = o.m_first; m <= (single ? o.m_first : o.m_last); ++m) print_one_tableau(o, family, m);
   return cli::finish_stdout("geomint-scheme");
@@ -525,12 +526,11 @@ int main(int argc, char** argv) {
       o.catalogue_name = v;
       return;
     }
-    const std::vector<std::string> built_in = {"lpf", "midpoint", "trapezoidal", "galerkin"};
-    for (const std::string& b : built_in)
-      if (b == v) o.scheme = v;
+    // The built-in schemes with an exact tableau of their own (schemes/registry.hpp).
+    if (const scheme_entry* e = find_scheme(v); e && e->exact_tableau) o.scheme = v;
     if (o.scheme != v)
-      throw cli::usage_error("--scheme must be one of lpf, midpoint, trapezoidal, galerkin or a method of the catalogue "
-                             "(geomint-scheme --list-methods); got " + cli::in_quotes(v));
+      throw cli::usage_error("--scheme must be one of " + scheme_names_where([](const scheme_entry& e) { return e.exact_tableau; }) +
+                             " or a method of the catalogue (geomint-scheme --list-methods); got " + cli::in_quotes(v));
   });
   cl.value("--nodes", [&](const std::string& v) {
     o.families = cli::parse_node_family_list("--nodes", v);
@@ -582,11 +582,13 @@ int main(int argc, char** argv) {
     }
   }
   try {
-    const int lo = o.scheme == "galerkin" ? 1 : 2;
-    const int hi = o.scheme == "galerkin" ? max_exact_stages : max_exact_m;
-    if (o.m_given && (o.scheme == "midpoint" || o.scheme == "trapezoidal"))
-      throw cli::usage_error("--m does not apply to --scheme " + o.scheme + " (it has no degree; --m is for lpf and galerkin)");
-    if (o.nodes_given && o.scheme != "lpf")
+    const scheme_entry& entry = *find_scheme(o.scheme);
+    const int lo = entry.exact_min_m;
+    const int hi = o.scheme == "galerkin" ? max_exact_stages : max_exact_m;  // galerkin's m is its number of stages
+    if (o.m_given && !entry.has_m)
+      throw cli::usage_error("--m does not apply to --scheme " + o.scheme + " (it has no degree; --m is for " +
+                             scheme_names_where([](const scheme_entry& e) { return e.has_m && e.exact_tableau; }, ", ", " and ") + ")");
+    if (o.nodes_given && !entry.has_nodes)
       throw cli::usage_error("--nodes does not apply to --scheme " + o.scheme + " (--nodes is for lpf only" +
                              (o.scheme == "galerkin" ? "; galerkin uses the Gauss points)" : ")"));
     const auto range = cli::parse_integer_range<int>("--m", o.m_text, lo, hi);

@@ -529,7 +529,7 @@ int modified_main(List list, int argc, const char* const* argv, study_tool tool 
   o.program = tool.program;
   parser cl(tool.program, tool.usage.empty() ? modified_usage(tool.program, system_names(list)) : tool.usage);
   cl.value("--scheme", [&](const std::string& v) {
-      o.scheme = cli::parse_choice("--scheme", v, {"lpf", "galerkin", "midpoint", "trapezoidal"});
+      o.scheme = cli::parse_choice("--scheme", v, exact_scheme_names());
     })
       .value("--nodes", [&](const std::string& v) {
         o.nodes = cli::parse_node_family("--nodes", v);
@@ -554,9 +554,13 @@ int modified_main(List list, int argc, const char* const* argv, study_tool tool 
   try {
     if (o.scheme.empty() == o.tableau.empty()) throw cli::usage_error("give one of --scheme and --tableau");
     if (!o.tableau.empty() && (o.nodes_given || o.m_given)) throw cli::usage_error("--nodes and --m apply to --scheme, not to --tableau");
-    if (o.nodes_given && o.scheme != "lpf") throw cli::usage_error("--nodes applies to --scheme lpf only");
-    if (o.m_given && (o.scheme == "midpoint" || o.scheme == "trapezoidal"))
-      throw cli::usage_error("--m applies to --scheme lpf and galerkin only");
+    const scheme_entry* entry = find_scheme(o.scheme);  // null with --tableau
+    if (o.nodes_given && !(entry && entry->has_nodes))
+      throw cli::usage_error("--nodes applies to --scheme " +
+                             scheme_names_where([](const scheme_entry& e) { return e.has_nodes && e.exact_tableau; }, ", ", " and ") + " only");
+    if (o.m_given && entry && !entry->has_m)
+      throw cli::usage_error("--m applies to --scheme " +
+                             scheme_names_where([](const scheme_entry& e) { return e.has_m && e.exact_tableau; }, ", ", " and ") + " only");
     if (o.scheme == "lpf" && o.m < 2) throw cli::usage_error("--m must be in 2..8 for --scheme lpf");
     if (o.system.empty()) {
       if (o.order == 0) throw cli::usage_error("--order K is needed without --system");

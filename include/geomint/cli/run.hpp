@@ -336,15 +336,17 @@ int run_main(List list, int argc, const char* const* argv, const run_tool& tool 
     if (is_extra_system(o.system))
       return cl.fail("--tableau runs on the free systems only, not on the constrained system " + o.system);
   }
-  if (nodes_or_basis_given && o.scheme != "lpf")
-    return cl.fail("--nodes and --basis apply to --scheme lpf only, not to --scheme " + o.scheme +
-                   (o.scheme == "lpf-fixed-point" ? " (Gauss-interior nodes by construction)" : ""));
+  const scheme_entry* entry = find_scheme(o.scheme);  // null for the tool's extra schemes
+  if (nodes_or_basis_given && !(entry && entry->has_nodes))
+    return cl.fail("--nodes and --basis apply to --scheme " + scheme_names_where([](const scheme_entry& e) { return e.has_nodes; }, ", ", " and ") +
+                   " only, not to --scheme " + o.scheme +
+                   (entry && !entry->nodes_note.empty() ? " (" + std::string(entry->nodes_note) + ")" : std::string()));
   if (m_given && !scheme_spec{o.scheme}.has_m()) {
     std::string note = "no degree";
     for (const auto& s : tool.extra_schemes)
       if (s.first == o.scheme) note = s.second;
-    return cl.fail("--m applies to --scheme lpf, lpf-fixed-point and galerkin only, not to --scheme " + o.scheme + " (" +
-                   note + ")");
+    return cl.fail("--m applies to --scheme " + scheme_names_where([](const scheme_entry& e) { return e.has_m; }, ", ", " and ") +
+                   " only, not to --scheme " + o.scheme + " (" + note + ")");
   }
   try {
     int status = 0;

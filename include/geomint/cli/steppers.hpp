@@ -23,18 +23,22 @@
 
 namespace geomint::cli {
 
-/// The scheme names of geomint/stepper.hpp.
+/// The names of the built-in schemes (schemes/registry.hpp).
 inline const std::vector<std::string>& scheme_list() {
-  static const std::vector<std::string> names(scheme_names.begin(), scheme_names.end());
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const scheme_entry& e : scheme_registry) out.emplace_back(e.name);
+    return out;
+  }();
   return names;
 }
-/// The schemes of every system: scheme_list but lpf-fixed-point (natural systems only), what
-/// the studies' `--scheme all` means.
+/// The schemes of every system: those that are not for natural systems only, what the studies'
+/// `--scheme all` means.
 inline const std::vector<std::string>& schemes_of_every_system() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> out;
-    for (const std::string& s : scheme_list())
-      if (s != "lpf-fixed-point") out.push_back(s);
+    for (const scheme_entry& e : scheme_registry)
+      if (!e.natural_only) out.emplace_back(e.name);
     return out;
   }();
   return names;

@@ -107,11 +107,12 @@ struct selection {
     std::string listed;
     for (const std::string& s : schemes) listed += (listed.empty() ? "" : ",") + s;
     if (m_given && !any_scheme([](const std::string& s) { return scheme_spec{s}.has_m(); }))
-      throw usage_error("--m applies to --scheme lpf, lpf-fixed-point and galerkin only, not to --scheme " +
-                             listed);
-    if (nodes_given && !any_scheme([](const std::string& s) { return s == "lpf"; }))
-      throw usage_error("--nodes applies to --scheme lpf only, not to --scheme " + listed +
-                             " (galerkin's map does not depend on nodes; lpf-fixed-point is on Gauss-interior nodes)");
+      throw usage_error("--m applies to --scheme " + scheme_names_where([](const scheme_entry& e) { return e.has_m; }, ", ", " and ") +
+                        " only, not to --scheme " + listed);
+    if (nodes_given && !any_scheme([](const std::string& s) { return takes_nodes(s); }))
+      throw usage_error("--nodes applies to --scheme " + scheme_names_where([](const scheme_entry& e) { return e.has_nodes; }, ", ", " and ") +
+                        " only, not to --scheme " + listed +
+                        " (galerkin's map does not depend on nodes; lpf-fixed-point is on Gauss-interior nodes)");
     for (const study_case& c : cases()) {
       try {
         with_digits(digits, [&]<int D>() { check_scheme<scalar_for_digits<D>>(List{}, c.system, c.spec); });
@@ -133,10 +134,10 @@ struct selection {
           out.push_back({system, s});
           continue;
         }
-        const std::vector<std::string> families = scheme == "lpf" ? nodes : std::vector<std::string>{"-"};
+        const std::vector<std::string> families = takes_nodes(scheme) ? nodes : std::vector<std::string>{"-"};
         for (const std::string& family : families)
           for (int m = m_low; m <= m_high; ++m) {
-            s.nodes = scheme == "lpf" ? family : "equispaced";
+            s.nodes = takes_nodes(scheme) ? family : "equispaced";
             s.m = m;
             out.push_back({system, s});
           }
