@@ -216,7 +216,7 @@ std::unique_ptr<any_stepper<T>> make_stepper(const scheme_spec& spec, const Sys&
       });
     });
   throw std::invalid_argument("unknown scheme '" + spec.scheme + "' (" +
-                              scheme_names_where([](const scheme_entry&) { return true; }, "|", "|") + ")");
+                              scheme_choices() + ")");
 }
 
 }  // namespace geomint

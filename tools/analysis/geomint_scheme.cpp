@@ -49,8 +49,8 @@ namespace {
 using namespace geomint;
 using decimal = boost::multiprecision::cpp_bin_float_50;
 
-const char* usage_text =
-    "usage: geomint-scheme [--analyse|--print-tableau] [--scheme lpf|midpoint|trapezoidal|galerkin]\n"
+const std::string usage_text =
+    "usage: geomint-scheme [--analyse|--print-tableau] [--scheme " + scheme_names_where([](const scheme_entry& e) { return e.exact_tableau; }, "|", "|") + "]\n"
     "                      [--nodes F[,F...]|all] [--m M|A..B|all] [--csv]\n"
     "       geomint-scheme --analyse --tableau FILE [--csv]\n"
     "       geomint-scheme --analyse|--print-tableau --scheme NAME [--csv]\n"
@@ -587,10 +587,10 @@ int main(int argc, char** argv) {
     const int hi = o.scheme == "galerkin" ? max_exact_stages : max_exact_m;  // galerkin's m is its number of stages
     if (o.m_given && !entry.has_m)
       throw cli::usage_error("--m does not apply to --scheme " + o.scheme + " (it has no degree; --m is for " +
-                             scheme_names_where([](const scheme_entry& e) { return e.has_m && e.exact_tableau; }, ", ", " and ") + ")");
+                             schemes_with_m(true) + ")");
     if (o.nodes_given && !entry.has_nodes)
-      throw cli::usage_error("--nodes does not apply to --scheme " + o.scheme + " (--nodes is for lpf only" +
-                             (o.scheme == "galerkin" ? "; galerkin uses the Gauss points)" : ")"));
+      throw cli::usage_error("--nodes does not apply to --scheme " + o.scheme + " (--nodes is for " + schemes_with_nodes(true) + " only" +
+                             (entry.nodes_note.empty() ? ")" : "; " + std::string(entry.nodes_note) + ")"));
     const auto range = cli::parse_integer_range<int>("--m", o.m_text, lo, hi);
     o.m_first = range.first;
     o.m_last = range.second;

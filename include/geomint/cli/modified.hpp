@@ -557,10 +557,10 @@ int modified_main(List list, int argc, const char* const* argv, study_tool tool 
     const scheme_entry* entry = find_scheme(o.scheme);  // null with --tableau
     if (o.nodes_given && !(entry && entry->has_nodes))
       throw cli::usage_error("--nodes applies to --scheme " +
-                             scheme_names_where([](const scheme_entry& e) { return e.has_nodes && e.exact_tableau; }, ", ", " and ") + " only");
+                             schemes_with_nodes(true) + " only");
     if (o.m_given && entry && !entry->has_m)
       throw cli::usage_error("--m applies to --scheme " +
-                             scheme_names_where([](const scheme_entry& e) { return e.has_m && e.exact_tableau; }, ", ", " and ") + " only");
+                             schemes_with_m(true) + " only");
     if (o.scheme == "lpf" && o.m < 2) throw cli::usage_error("--m must be in 2..8 for --scheme lpf");
     if (o.system.empty()) {
       if (o.order == 0) throw cli::usage_error("--order K is needed without --system");

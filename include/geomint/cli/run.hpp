@@ -263,7 +263,7 @@ struct run_tool {
 inline std::string run_usage(const std::string& program, const std::vector<std::string>& names) {
   const std::string pad(program.size() + 8, ' ');
   return "usage: " + program + " [--system " + comma_list(names) + "]\n" + pad +
-         "[--scheme lpf|lpf-fixed-point|midpoint|trapezoidal|galerkin | --tableau FILE]\n" + pad +
+         "[--scheme " + scheme_choices() + " | --tableau FILE]\n" + pad +
          "[--nodes " + core::detail::joined(node_family_names) + "] [--basis lagrange|bernstein]\n" + pad +
          "[--m M (2..16)] [--tau T (> 0)] [--steps N (0..10^12)] [--every K (1..10^12)]\n" + pad +
          "[--q0 a[,b...]] [--p0 a[,b...]] [--digits 16|50|100] [--csv]\n" + pad +
@@ -338,14 +338,14 @@ int run_main(List list, int argc, const char* const* argv, const run_tool& tool 
   }
   const scheme_entry* entry = find_scheme(o.scheme);  // null for the tool's extra schemes
   if (nodes_or_basis_given && !(entry && entry->has_nodes))
-    return cl.fail("--nodes and --basis apply to --scheme " + scheme_names_where([](const scheme_entry& e) { return e.has_nodes; }, ", ", " and ") +
+    return cl.fail("--nodes and --basis apply to --scheme " + schemes_with_nodes() +
                    " only, not to --scheme " + o.scheme +
                    (entry && !entry->nodes_note.empty() ? " (" + std::string(entry->nodes_note) + ")" : std::string()));
   if (m_given && !scheme_spec{o.scheme}.has_m()) {
     std::string note = "no degree";
     for (const auto& s : tool.extra_schemes)
       if (s.first == o.scheme) note = s.second;
-    return cl.fail("--m applies to --scheme " + scheme_names_where([](const scheme_entry& e) { return e.has_m; }, ", ", " and ") +
+    return cl.fail("--m applies to --scheme " + schemes_with_m() +
                    " only, not to --scheme " + o.scheme + " (" + note + ")");
   }
   try {

@@ -107,12 +107,11 @@ struct selection {
     std::string listed;
     for (const std::string& s : schemes) listed += (listed.empty() ? "" : ",") + s;
     if (m_given && !any_scheme([](const std::string& s) { return scheme_spec{s}.has_m(); }))
-      throw usage_error("--m applies to --scheme " + scheme_names_where([](const scheme_entry& e) { return e.has_m; }, ", ", " and ") +
+      throw usage_error("--m applies to --scheme " + schemes_with_m() +
                         " only, not to --scheme " + listed);
     if (nodes_given && !any_scheme([](const std::string& s) { return takes_nodes(s); }))
-      throw usage_error("--nodes applies to --scheme " + scheme_names_where([](const scheme_entry& e) { return e.has_nodes; }, ", ", " and ") +
-                        " only, not to --scheme " + listed +
-                        " (galerkin's map does not depend on nodes; lpf-fixed-point is on Gauss-interior nodes)");
+      throw usage_error("--nodes applies to --scheme " + schemes_with_nodes() + " only, not to --scheme " + listed + " (" +
+                        nodes_notes() + ")");
     for (const study_case& c : cases()) {
       try {
         with_digits(digits, [&]<int D>() { check_scheme<scalar_for_digits<D>>(List{}, c.system, c.spec); });

@@ -33,7 +33,8 @@ inline constexpr std::array<scheme_entry, 5> scheme_registry{{
      .nodes_note = "Gauss-interior nodes by construction"},
     {.name = "midpoint", .exact_tableau = true},
     {.name = "trapezoidal", .exact_tableau = true},
-    {.name = "galerkin", .has_m = true, .exact_tableau = true, .exact_min_m = 1},
+    {.name = "galerkin", .has_m = true, .exact_tableau = true, .exact_min_m = 1,
+     .nodes_note = "its map does not depend on nodes"},
 }};
 
 /// The entry of `name`, or null.
@@ -61,6 +62,33 @@ std::string scheme_names_where(Pred pred, std::string_view separator = ", ", std
     if (count > 0) out += (count + 1 == total) ? last : separator;
     out += e.name;
     ++count;
+  }
+  return out;
+}
+
+/// Every scheme's name, "lpf|lpf-fixed-point|...", as the usage texts list the choices.
+inline std::string scheme_choices() {
+  return scheme_names_where([](const scheme_entry&) { return true; }, "|", "|");
+}
+
+/// The schemes with a degree m, "lpf, lpf-fixed-point and galerkin"; with `exact_only`, those of
+/// the exact analysis.
+inline std::string schemes_with_m(bool exact_only = false) {
+  return scheme_names_where([&](const scheme_entry& e) { return e.has_m && (e.exact_tableau || !exact_only); }, ", ", " and ");
+}
+
+/// The schemes that take a node family and a basis; with `exact_only`, those of the exact analysis.
+inline std::string schemes_with_nodes(bool exact_only = false) {
+  return scheme_names_where([&](const scheme_entry& e) { return e.has_nodes && (e.exact_tableau || !exact_only); }, ", ", " and ");
+}
+
+/// Why --nodes does not apply to each scheme that has an m but no nodes, joined by "; ":
+/// "lpf-fixed-point: Gauss-interior nodes by construction; galerkin: its map does not depend on nodes".
+inline std::string nodes_notes() {
+  std::string out;
+  for (const scheme_entry& e : scheme_registry) {
+    if (e.nodes_note.empty()) continue;
+    out += (out.empty() ? "" : "; ") + std::string(e.name) + ": " + std::string(e.nodes_note);
   }
   return out;
 }
