@@ -3,6 +3,7 @@
 /// example tableau files, RK4 and Nystrom's method written as files, against their published
 /// orders; the partitioned form of Stormer-Verlet against Lobatto IIIA-IIIB; and the order of
 /// the library's schemes against the independent RKN analysis (analysis/order_conditions.hpp).
+#include <array>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -76,6 +77,34 @@ TEST_CASE("bseries method analysis: RK4, Gauss RK and Nystrom's method written a
   const method_analysis pair = analyse_method(pair_of(lobatto_iiia_3(), lobatto_iiib_3()), 10, 6);
   CHECK(pair.order == 4);
   CHECK(pair.symplectic);
+}
+
+TEST_CASE("bseries method analysis: the order of each component", "[bseries]") {
+  // One-stage RKN methods, expanded by hand against q(h) = q + h v + h^2/2 f + h^3/6 f'v + ...,
+  // v(h) = v + h f + h^2/2 f'v + h^3/6 (f''(v, v) + f'f) + ...:
+  // c = 0, bbar = 1/2, b = 1: q1 = q + h v + h^2/2 f (error h^3/6 f'v: position order 2),
+  // v1 = v + h f (error h^2/2 f'v: velocity order 1); the method's order is 1.
+  const method_analysis kick = analyse_method(from_text("kind rkn\nstages 1\nc 0\na 0\nbbar 1/2\nb 1\n"));
+  CHECK(kick.component_order == std::array<int, 2>{2, 1});
+  CHECK(kick.component_order_is_lower_bound == std::array<bool, 2>{false, false});
+  CHECK(kick.order == 1);
+  // c = 1/2: v1 = v + h f(q + h/2 v) = v + h f + h^2/2 f'v + h^3/8 f''(v, v) (velocity order 2),
+  // q1 = q + h v + h^2/2 f + h^3/4 f'v (position order 2).
+  const method_analysis mid = analyse_method(from_text("kind rkn\nstages 1\nc 1/2\na 0\nbbar 1/2\nb 1\n"));
+  CHECK(mid.component_order == std::array<int, 2>{2, 2});
+  CHECK(mid.order == 2);
+  // One component for rk: RK4 (order 4, HNW I, Table II.1.2) in both entries.
+  const method_analysis rk4 = analyse_method(from_text(
+      "kind rk\nstages 4\nc 0 1/2 1/2 1\n"
+      "a 0 0 0 0  1/2 0 0 0  0 1/2 0 0  0 0 1 0\nb 1/6 1/3 1/3 1/6\n"));
+  CHECK(rk4.component_order == std::array<int, 2>{4, 4});
+  // A prk pair whose stages are Heun's on both components, with Euler's update on q (b = (1, 0))
+  // and Heun's on p: q1 = q + h f(q, p) is first order, p1 = p + h/2 (g(q, p) + g(q + h f, p + h g))
+  // is Heun's method on (q, p), second order (HNW I, section II.1); the method's order is 1.
+  const method_analysis coupled = analyse_method(from_text(
+      "kind prk\nstages 2\nc 0 1\na 0 0 1 0\nb 1 0\nahat 0 0 1 0\nbhat 1/2 1/2\n"));
+  CHECK(coupled.component_order == std::array<int, 2>{1, 2});
+  CHECK(coupled.order == 1);
 }
 
 TEST_CASE("bseries series: the fixed-size methods:: tableaux give the series of their run-time data", "[bseries]") {

@@ -29,6 +29,18 @@ endforeach()
 geomint_cli_test(geomint_cli_scheme_catalogue_text zero
                  "catalogue method forest-ruth .Forest-Ruth; Forest & Ruth 1990.: forest-ruth .rkn, 3 stages.*order 4 .*symplectic: yes.*principal error constant C = [0-9.e-]+ .position C_q = [0-9.e-]+, velocity C_p = [0-9.e-]+. at order 5.*interval of periodicity tau. = 1[.]57340194743454005662957944196; phase-lag order 4"
                  $<TARGET_FILE:geomint-scheme> --analyse --scheme forest-ruth)
+# Exact symplecticity on the irreducible method, with the first defect where it fails: Radau
+# IIA, s = 2 (c = (1/3, 1), a_11 = 5/12, b_1 = 3/4; Hairer & Wanner II, section IV.5):
+# 2 b_1 a_11 - b_1^2 = 5/8 - 9/16 = 1/16; Lobatto IIIB, s = 2, is the implicit midpoint rule
+# (its two stages are equal); the per-component orders of Nystrom's method (order 4 in both).
+geomint_cli_test(geomint_cli_scheme_catalogue_defect zero
+                 "symplectic: no .b_i a_ij [+] b_j a_ji = b_i b_j, exact, on the irreducible method of 2 stages.*defect of b_i a_ij [+] b_j a_ji = b_i b_j at .i, j. = .1, 1.: 1/16"
+                 $<TARGET_FILE:geomint-scheme> --analyse --scheme radau-iia-2)
+geomint_cli_test(geomint_cli_scheme_catalogue_reducible zero
+                 "symplectic: yes .b_i a_ij [+] b_j a_ji = b_i b_j, exact, on the irreducible method of 1 stage."
+                 $<TARGET_FILE:geomint-scheme> --analyse --scheme lobatto-iiib-2)
+geomint_cli_test(geomint_cli_scheme_catalogue_components zero "order of each component: position 4, velocity 4 .local."
+                 $<TARGET_FILE:geomint-scheme> --analyse --scheme nystrom-4)
 # --print-tableau: a tableau file (Gauss s = 3: c = 1/2 -+ sqrt 15/10, b = (5, 8, 5)/18;
 # Hairer & Wanner II, section IV.5), read back with the same analysis.
 geomint_cli_test(geomint_cli_scheme_catalogue_print zero

@@ -1,13 +1,14 @@
 // geomint-scheme: exact analysis of the library's schemes from their RKN tableaux
 // (include/geomint/analysis: rkn_tableau, order_conditions, scheme_structure, linear_stability).
 //
-//   geomint-scheme [--m M|all] [--nodes F] [--scheme lpf|midpoint|trapezoidal|galerkin] [--csv]
+//   geomint-scheme [--m M|all] [--nodes F] [--scheme S] [--csv]
 //       the exact two-step form x^{k+1} = R(tau) x^k - x^{k-1} for y'' = -y (every family)
 //   geomint-scheme --analyse [--scheme S] [--nodes F[,F...]|all] [--m M|A..B|all] [--csv]
 //       order (Nystrom trees), stage order, symplecticity, symmetry, error constants, linear
 //       stability (interval of periodicity or of absolute stability), dissipation, phase lag
 //   geomint-scheme --analyse --tableau FILE [--csv]
-//       order (B-/P-series against the exact flow), error constants and symplecticity of the method
+//       order (B-/P-series against the exact flow; per component), error constants and exact
+//       symplecticity (the algebraic conditions on the irreducible method, tableau_symplecticity.hpp) of the method
 //       of a tableau file, exactly over its coefficients (include/geomint/analysis/bseries:
 //       method_analysis.hpp, error_constants.hpp), symmetry, stage order and linear stability over
 //       Q or Q(r) (analysis/method_verdicts.hpp, rk_stability.hpp, field_stability.hpp)
@@ -40,6 +41,7 @@
 #include "geomint/analysis/order_conditions.hpp"
 #include "geomint/analysis/rkn_tableau.hpp"
 #include "geomint/analysis/scheme_structure.hpp"
+#include "geomint/analysis/tableau_symplecticity.hpp"
 #include "geomint/methods/catalogue.hpp"
 #include "geomint/methods/tableau_file.hpp"
 #include "geomint/schemes/registry.hpp"
@@ -71,8 +73,10 @@ const std::string usage_text =
     "  --tableau FILE  with --analyse: the method of a tableau file (docs/guide/tableau_files.md),\n"
     "              analysed exactly over its coefficients: order from the B-series (rk, trees to\n"
     "              order 10) or P-series (prk; rkn and nystrom on their Nystrom trees; to order 8)\n"
-    "              against the exact flow, symplecticity by the tree conditions up to that order\n"
-    "              (rk, prk) or the exact RKN conditions (rkn, nystrom); symmetry up to any stage\n"
+    "              against the exact flow, and of each component (local); symplecticity by the\n"
+    "              exact conditions on the irreducible method (rk: b_i a_ij + b_j a_ji = b_i b_j;\n"
+    "              prk: b_i ahat_ij + bhat_j a_ji = b_i bhat_j, b = bhat; rkn, nystrom: Suris's),\n"
+    "              the first nonzero defect where they fail; symmetry up to any stage\n"
     "              permutation, stage order; rk: R(z) on y' = lambda y, A- and L-stability, the\n"
     "              imaginary-axis interval (stability a-stable, else its kind); every kind: the step\n"
     "              on y'' = -y (prk, rkn, nystrom: stability periodic|absolute|none), exactly over Q\n"
@@ -323,9 +327,26 @@ int analyse_file(const options& o, const methods::tableau_data<methods::field_el
             << (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom
                     ? "Nystrom trees"
                     : r.colours == 1 ? "B-series, rooted trees" : "P-series, bi-coloured trees")
-            << " up to order " << r.tree_order << "), stage order " << v.stage_order << "\n"
-            << "  symplectic: " << (r.symplectic ? "yes" : "no") << " (" << r.symplecticity_basis << "); symmetric: "
+            << " up to order " << r.tree_order << "), stage order " << v.stage_order << "\n";
+  if (r.colours == 2) {
+    const bool prk = t.kind == methods::method_kind::prk;
+    auto component = [&](std::size_t k) {
+      return std::to_string(r.component_order[k]) + (r.component_order_is_lower_bound[k] ? "+" : "");
+    };
+    std::cout << "  order of each component: " << (prk ? "first (A, b) " : "position ") << component(0)
+              << (prk ? ", second (Ahat, bhat) " : ", velocity ") << component(1) << " (local)\n";
+  }
+  std::cout << "  symplectic: " << (r.symplectic ? "yes" : "no") << " (" << r.symplecticity_basis << "); symmetric: "
             << (v.symmetric ? "yes" : "no") << " (up to a permutation of the stages)\n";
+  if (!r.symplectic) {
+    const auto sy = analysis::symplecticity_conditions(t);
+    if (sy.defect_i >= 0)
+      std::cout << "  defect of " << sy.matrix_condition << " at (i, j) = (" << sy.defect_i + 1 << ", " << sy.defect_j + 1
+                << "): " << exact_text(sy.defect[static_cast<std::size_t>(sy.defect_i)][static_cast<std::size_t>(sy.defect_j)]) << "\n";
+    if (sy.weight_defect_i >= 0)
+      std::cout << "  defect of " << sy.weight_condition << " at i = " << sy.weight_defect_i + 1 << ": "
+                << exact_text(sy.weight_defect[static_cast<std::size_t>(sy.weight_defect_i)]) << "\n";
+  }
   if (has_constants) {
     std::cout << "  principal error constant C = " << constant_text(ec.squared);
     if (ec.squared.is_rational()) std::cout << ", C^2 = " << exact_text(ec.squared);

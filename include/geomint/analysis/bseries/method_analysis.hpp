@@ -8,20 +8,27 @@
 ///   q'' = F(q, q') and rkn on the special N-trees of q'' = f(q), with the weights of the
 ///   Nystrom coefficients themselves (nystrom_tree_set.hpp; the same order as on the Nystrom
 ///   trees of the partitioned form, partitioned_form.hpp, as shown there).
-/// - Symplecticity: rk and prk by the conditions on the modified field up to the order analysed
-///   (symplectic_conditions.hpp; a verdict up to that order, not a proof beyond it). rkn and
-///   nystrom (on q'' = f(q), d = 1) by the exact algebraic conditions of Suris 1989 (HLW Theorem
-///   VI.4.10): bbar_i = b_i (1 - c_i), b_i (bbar_j - a_ij) = b_j (bbar_i - a_ji); the tree
-///   conditions do not apply to them as they stand, because the P-series of the partitioned form on the
-///   trees outside the Nystrom trees depends on the conversion, not on the method.
+/// - The order of each component: the largest p with those conditions for the trees of that
+///   component up to p (the root's colour: prk colour 0 for (A, b), colour 1 for (Ahat, bhat);
+///   N-trees: a meagre root for the position, a fat one for the velocity), the local order of
+///   that component; the method's order is the smaller.
+/// - Symplecticity of a tableau: the exact algebraic conditions on its irreducible method
+///   (analysis/tableau_symplecticity.hpp: rk, prk, and rkn and nystrom on q'' = f(q)). Of a
+///   Nystrom form (a composition) with d = 1: the RKN conditions of Suris 1989 (HLW Theorem
+///   VI.4.10), bbar_i = b_i (1 - c_i), b_i (bbar_j - a_ij) = b_j (bbar_i - a_ji), on its stages
+///   as they stand. The tree conditions on the modified field (symplectic_conditions.hpp) are the
+///   independent check of the tests; they do not apply to rkn and nystrom as they stand,
+///   because the P-series of the partitioned form on the trees outside the Nystrom trees depends
+///   on the conversion, not on the method.
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include "geomint/analysis/bseries/modified_equation.hpp"
 #include "geomint/analysis/bseries/nystrom_tree_set.hpp"
 #include "geomint/analysis/bseries/partitioned_form.hpp"
-#include "geomint/analysis/bseries/symplectic_conditions.hpp"
+#include "geomint/analysis/tableau_symplecticity.hpp"
 
 namespace geomint::analysis::bseries {
 
@@ -34,8 +41,13 @@ struct method_analysis {
   bool order_is_lower_bound = false;  ///< every condition up to tree_order holds
   int tree_order = 0;                 ///< largest tree order analysed
   int colours = 1;                    ///< 1: B-series, 2: P-series
+  /// The local order of each component: prk (A, b) and (Ahat, bhat); rkn, nystrom and Nystrom
+  /// forms position and velocity; rk the one component (both entries equal).
+  std::array<int, 2> component_order{};
+  std::array<bool, 2> component_order_is_lower_bound{};
   bool symplectic = false;
-  /// "tree conditions up to order N" or "RKN conditions (exact)".
+  /// The conditions the verdict is from, e.g. "b_i a_ij + b_j a_ji = b_i b_j, exact, on the
+  /// irreducible method of 1 stage" or "RKN conditions (exact)".
   std::string symplecticity_basis;
 };
 
@@ -55,19 +67,39 @@ bool rkn_symplectic(const methods::nystrom_form<K>& f) {
 }  // namespace detail
 
 namespace detail {
-/// The order from the local error coefficients `err` of trees sorted by order (a tree_set or a
-/// nystrom_tree_set): one less than the order of the first tree with a nonzero one, else
-/// r.tree_order as a lower bound.
+/// The component of a tree's series: the root's colour (tree_set) or kind (N-trees: meagre,
+/// the position, 0; fat, the velocity, 1).
+inline int component_of(const tree_set& trees, int t) { return trees.colours() == 1 ? 0 : trees[t].colour; }
+inline int component_of(const nystrom_tree_set& trees, int t) { return trees[t].fat ? 1 : 0; }
+
+/// The orders from the local error coefficients `err` of trees sorted by order (a tree_set or
+/// a nystrom_tree_set): per component one less than the order of its first tree with a nonzero
+/// one, else r.tree_order as a lower bound; the method's order the smaller.
 template <class Trees, class K>
 void order_of(const Trees& trees, const std::vector<K>& err, method_analysis& r) {
-  r.order = r.tree_order;
-  r.order_is_lower_bound = true;
+  r.component_order = {r.tree_order, r.tree_order};
+  r.component_order_is_lower_bound = {true, true};
   for (int t = 0; t < trees.size(); ++t) {
-    if (err[static_cast<std::size_t>(t)] == K(0)) continue;
-    r.order = trees[t].order - 1;
-    r.order_is_lower_bound = false;
-    return;
+    const auto k = static_cast<std::size_t>(component_of(trees, t));
+    if (err[static_cast<std::size_t>(t)] == K(0) || !r.component_order_is_lower_bound[k]) continue;
+    r.component_order[k] = trees[t].order - 1;
+    r.component_order_is_lower_bound[k] = false;
   }
+  if (r.colours == 1 || trees.size() == 0) {  // one component
+    r.component_order[1] = r.component_order[0];
+    r.component_order_is_lower_bound[1] = r.component_order_is_lower_bound[0];
+  }
+  const std::size_t low = r.component_order[1] < r.component_order[0] ? 1 : 0;
+  r.order = r.component_order[low];
+  r.order_is_lower_bound = r.component_order_is_lower_bound[0] && r.component_order_is_lower_bound[1];
+}
+
+/// The basis text of a symplecticity verdict from the exact conditions.
+template <class K>
+std::string conditions_text(const tableau_symplecticity<K>& v) {
+  return v.matrix_condition + (v.weight_condition.empty() ? std::string() : " and " + v.weight_condition) +
+         ", exact, on the irreducible method of " + std::to_string(v.irreducible_stages) +
+         (v.irreducible_stages == 1 ? " stage" : " stages");
 }
 }  // namespace detail
 
@@ -92,15 +124,22 @@ template <class K>
 method_analysis analyse_method(const tableau_data<K>& t, int order_one_colour = default_order_one_colour,
                                int order_two_colours = default_order_two_colours) {
   if (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom)
-    return analyse_method(methods::nystrom_form_of(t), order_two_colours);
+  {
+    method_analysis r = analyse_method(methods::nystrom_form_of(t), order_two_colours);
+    const tableau_symplecticity<K> v = symplecticity_conditions(t);
+    r.symplectic = v.symplectic;
+    r.symplecticity_basis = detail::conditions_text(v);
+    return r;
+  }
   method_analysis r;
   r.colours = t.kind == methods::method_kind::rk ? 1 : 2;
   r.tree_order = r.colours == 1 ? order_one_colour : order_two_colours;
   const tree_set trees(r.tree_order, r.colours);
   const std::vector<K> a = elementary_weights(trees, t);
   detail::order_of(trees, local_error_coefficients(trees, a), r);
-  r.symplectic = check_symplecticity_conditions(trees, modified_field(trees, a)).holds;
-  r.symplecticity_basis = "tree conditions up to order " + std::to_string(r.tree_order);
+  const tableau_symplecticity<K> v = symplecticity_conditions(t);
+  r.symplectic = v.symplectic;
+  r.symplecticity_basis = detail::conditions_text(v);
   return r;
 }
 
