@@ -39,6 +39,32 @@ TEMPLATE_LIST_TEST_CASE("collocation rkn: the two-stage Gauss method in closed f
   }
 }
 
+TEMPLATE_LIST_TEST_CASE("collocation nystrom: the velocity matrix on two nodes in closed form", "[methods][collocation_rkn]",
+                        geomint::test::integrator_scalar_types) {
+  // Exact mathematics, ap_ij = int_0^{c_i} l_j(u) du. Gauss points: the Gauss Runge-Kutta matrix
+  // (1/4, 1/4 - sqrt 3/6; 1/4 + sqrt 3/6, 1/4) (Hairer, Lubich & Wanner 2006, Table II.1.1).
+  // Nodes 1/3, 2/3: l_1 = 2 - 3u, l_2 = 3u - 1, so ap = (1/2, -1/6; 2/3, 0). Both keep the
+  // position part of collocation_rkn (the rows of a sum to c_i^2 / 2 there, as here a to c).
+  using T = TestType;
+  using std::abs;
+  using std::sqrt;
+  const T tol = geomint::test::eps_tol<T>(8);
+  const T r3 = sqrt(T(3));
+  const methods::stage_vector<T, 2> gauss{T(1) / T(2) - r3 / T(6), T(1) / T(2) + r3 / T(6)};
+  const methods::nystrom<T, 2> g = methods::collocation_nystrom<T, 2>(gauss);
+  const T ap[2][2] = {{T(1) / T(4), T(1) / T(4) - r3 / T(6)}, {T(1) / T(4) + r3 / T(6), T(1) / T(4)}};
+  const methods::rkn<T, 2> positions = methods::collocation_rkn<T, 2>(gauss);
+  for (std::size_t i = 0; i < 2; ++i)
+    for (std::size_t j = 0; j < 2; ++j) {
+      CHECK(abs(T(g.ap[i][j] - ap[i][j])) <= tol);
+      CHECK(g.a[i][j] == positions.a[i][j]);
+    }
+  const methods::nystrom<T, 2> e = methods::collocation_nystrom<T, 2>({T(1) / T(3), T(2) / T(3)});
+  const T thirds[2][2] = {{T(1) / T(2), T(-1) / T(6)}, {T(2) / T(3), T(0)}};
+  for (std::size_t i = 0; i < 2; ++i)
+    for (std::size_t j = 0; j < 2; ++j) CHECK(abs(T(e.ap[i][j] - thirds[i][j])) <= tol);
+}
+
 /// The tableau on the interior nodes of (m, Family) against the exact analysis' one in 50 digits.
 template <int M, class Family>
 void check_family() {

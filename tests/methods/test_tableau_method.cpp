@@ -9,6 +9,8 @@
 #include "geomint/analysis/closed_form_flows.hpp"
 #include "geomint/integrator.hpp"
 #include "geomint/mechanics/systems.hpp"
+#include "geomint/mechanics/zoo.hpp"
+#include "geomint/methods/collocation_rkn.hpp"
 #include "geomint/methods/tableau_method.hpp"
 #include "field_numbers.hpp"
 #include "scalar_types.hpp"
@@ -224,6 +226,69 @@ TEMPLATE_TEST_CASE("tableau_method: the Gauss Nystrom tableau on a Lagrangian th
   vec<T, 2> q2(T(1), T(0)), v2(T(0), T(1));
   CHECK(map_difference<methods::tableau_method<gauss2_nystrom>, lpf<3, gauss_interior>>(systems::charged{}, q2, v2, tau, 10) <=
         newton_tolerance<T>());
+}
+
+namespace {
+/// LPF of degree M on Family's nodes as data: the collocation Nystrom tableau on its M - 1
+/// interior nodes in T (methods/collocation_rkn.hpp).
+template <class Family, int M, class T>
+struct lpf_as_nystrom {
+  static auto tableau() {
+    const auto all = nodes<Family, M, T>();
+    methods::stage_vector<T, M - 1> c;
+    for (std::size_t i = 0; i + 1 < static_cast<std::size_t>(M); ++i) c[i] = all[i + 1];
+    return methods::collocation_nystrom<T, M - 1>(c);
+  }
+};
+
+/// The largest relative difference between one step of A and one of B from the same state, over
+/// the states of `steps` steps of B: the maps themselves, without the accumulation of a run.
+template <class A, class B, class Sys, class T>
+T step_difference(const Sys& sys, const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0, const T& tau, int steps) {
+  using std::abs;
+  integrator<A, Sys, T> a(sys, tau);
+  integrator<B, Sys, T> b(sys, tau);
+  auto sb = b.initial_state(q0, v0);
+  T worst(0);
+  for (int k = 0; k < steps; ++k) {
+    auto sa = sb;
+    a.step(sa);
+    b.step(sb);
+    for (int i = 0; i < Sys::dof; ++i) {
+      worst = std::max<T>(worst, T(abs(T(sa.q[i] - sb.q[i])) / std::max<T>(T(1), T(abs(sb.q[i])))));
+      worst = std::max<T>(worst, T(abs(T(sa.p[i] - sb.p[i])) / std::max<T>(T(1), T(abs(sb.p[i])))));
+    }
+  }
+  return worst;
+}
+
+template <class Family, int M, class T>
+void check_lpf_is_nystrom_collocation() {
+  // docs/results/schemes.md, "LPF as a Nystrom method": LPF's path satisfies the Euler-Lagrange
+  // equations at the interior nodes, which is the collocation Nystrom method there for
+  // q'' = F(q, q') with p <-> v by the Legendre maps. Both integrators solve their implicit
+  // equations to their Newton tolerance, so one step of each from the same state agrees to it.
+  INFO(Family::name << ", m = " << M);
+  const T tau = T(1) / T(10);
+  vec<T, 2> q(T(1), T(0)), v(T(0), T(1));
+  CHECK(step_difference<methods::tableau_method<lpf_as_nystrom<Family, M, T>>, lpf<M, Family>>(systems::charged{}, q, v, tau, 10) <=
+        newton_tolerance<T>());
+  vec<T, 2> qs(T(11) / T(10), T(1) / T(2)), vs(T(0), T(0));
+  CHECK(step_difference<methods::tableau_method<lpf_as_nystrom<Family, M, T>>, lpf<M, Family>>(zoo::spring_pendulum{}, qs, vs, tau, 10) <=
+        newton_tolerance<T>());
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE("tableau_method: LPF on a Lagrangian that is not natural is the collocation Nystrom method on its interior nodes",
+                   "[methods]", double, cpp_bin_float_50) {
+  using T = TestType;
+  check_lpf_is_nystrom_collocation<equispaced, 3, T>();
+  check_lpf_is_nystrom_collocation<equispaced, 4, T>();
+  check_lpf_is_nystrom_collocation<gauss_lobatto, 4, T>();
+  check_lpf_is_nystrom_collocation<chebyshev_lobatto, 5, T>();
+  check_lpf_is_nystrom_collocation<gauss_interior, 4, T>();
+  check_lpf_is_nystrom_collocation<radau_right, 3, T>();
+  check_lpf_is_nystrom_collocation<radau_left, 3, T>();
 }
 
 TEST_CASE("tableau_method: classical RK4 and Nystrom's method have order 4 in 50 digits", "[methods]") {
