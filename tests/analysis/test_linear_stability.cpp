@@ -13,6 +13,7 @@
 #include "catch.hpp"
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/rkn_tableau.hpp"
+#include "geomint/methods/catalogue.hpp"
 
 using namespace geomint;
 using T = boost::multiprecision::cpp_bin_float_50;
@@ -105,6 +106,32 @@ TEST_CASE("linear stability: Nystrom's order-4 method is stable exactly on its i
   // the solution grows.
   CHECK(largest_amplitude(t, T(3), 200) > T(1000000));
   CHECK(linear_stability_interval(linear_stability(exact)).compare_squared(exact_number(9)) > 0);
+}
+
+TEST_CASE("linear stability: the Dormand-El-Mikkawy-Prince pairs on their intervals, or none", "[analysis][stability]") {
+  // RKN4(3)4FM, both formulas: absolute stability (det M != 1) on their intervals (3.7678 and
+  // 2.4823), bounded inside and growing outside.
+  const auto rkn43 = methods::demp_rkn43::tableau(), embedded = methods::demp_rkn43_embedded::tableau();
+  const exact_rkn_tableau e43 = rational_rkn_tableau(rkn43.c, rkn43.a, rkn43.bbar, rkn43.b);
+  const exact_rkn_tableau e43e = rational_rkn_tableau(embedded.c, embedded.a, embedded.bbar, embedded.b);
+  CHECK_FALSE(linear_stability(e43).determinant_is_one);
+  check_interval(e43, numeric_tableau<T>(e43, nullptr), "demp rkn43");
+  check_interval(e43e, numeric_tableau<T>(e43e, nullptr), "demp rkn43 embedded");
+  // RKN6(4)6FM: an empty interval, its dissipation constant negative: the step matrix's
+  // spectral radius sqrt(det M) (complex eigenvalues for small tau) exceeds 1 already at small
+  // tau, measured from the numerical step.
+  const auto rkn64 = methods::demp_rkn64::tableau();
+  const exact_rkn_tableau e64 = rational_rkn_tableau(rkn64.c, rkn64.a, rkn64.bbar, rkn64.b);
+  CHECK(linear_stability_interval(linear_stability(e64)).empty);
+  const methods::tableau_data<T> t64 = numeric_tableau<T>(e64, nullptr);
+  for (const T& tau : {T(1) / T(4), T(1) / T(2), T(1)}) {
+    const auto [m11, m21] = harmonic_step(t64, T(1), T(0), tau);
+    const auto [m12, m22] = harmonic_step(t64, T(0), T(1), tau);
+    const T trace = m11 + m22, det = m11 * m22 - m12 * m21;
+    INFO("tau = " << tau << ", det M - 1 = " << T(det - T(1)));
+    CHECK(trace * trace < T(4) * det);  // complex pair: spectral radius sqrt(det)
+    CHECK(det > T(1));
+  }
 }
 
 TEST_CASE("linear stability: Stormer-Verlet and LPF m = 4 are periodic exactly on their intervals", "[analysis][stability]") {

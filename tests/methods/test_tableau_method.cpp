@@ -10,6 +10,7 @@
 #include "geomint/integrator.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/mechanics/zoo.hpp"
+#include "geomint/methods/collocation_families.hpp"
 #include "geomint/methods/collocation_rkn.hpp"
 #include "geomint/methods/tableau_method.hpp"
 #include "field_numbers.hpp"
@@ -289,6 +290,24 @@ TEMPLATE_TEST_CASE("tableau_method: LPF on a Lagrangian that is not natural is t
   check_lpf_is_nystrom_collocation<gauss_interior, 4, T>();
   check_lpf_is_nystrom_collocation<radau_right, 3, T>();
   check_lpf_is_nystrom_collocation<radau_left, 3, T>();
+}
+
+TEMPLATE_TEST_CASE("tableau_method: galerkin on a natural system is the Gauss Runge-Kutta method of the catalogue", "[methods]",
+                   double, cpp_bin_float_50) {
+  // The Galerkin VI of degree m with m-point Gauss quadrature is the Gauss RK method applied to
+  // H(q, p) (Hairer, Lubich & Wanner 2006, Theorem VI.6.4); on a natural system with M = I the
+  // Legendre map is linear (p = v) and the method runs on (q, p) as it does on (q, v). One step
+  // of each from the same state agrees to the Newton tolerance.
+  using T = TestType;
+  const T tau = T(1) / T(4);
+  vec<T, 2> q2(T(1) / T(2), T(0)), v2(T(0), T(3) / T(2));
+  vec<T, 1> q1(T(2)), v1(T(0));
+  CHECK(step_difference<methods::tableau_method<methods::gauss<2>>, galerkin_vi<2>>(systems::kepler{}, q2, v2, tau, 10) <= newton_tolerance<T>());
+  CHECK(step_difference<methods::tableau_method<methods::gauss<3>>, galerkin_vi<3>>(systems::kepler{}, q2, v2, tau, 10) <= newton_tolerance<T>());
+  CHECK(step_difference<methods::tableau_method<methods::gauss<4>>, galerkin_vi<4>>(systems::pendulum{}, q1, v1, tau, 10) <=
+        newton_tolerance<T>());
+  CHECK(step_difference<methods::tableau_method<methods::gauss<5>>, galerkin_vi<5>>(systems::pendulum{}, q1, v1, tau, 10) <=
+        newton_tolerance<T>());
 }
 
 TEST_CASE("tableau_method: classical RK4 and Nystrom's method have order 4 in 50 digits", "[methods]") {
