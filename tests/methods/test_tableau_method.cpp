@@ -144,10 +144,22 @@ T newton_tolerance() {
   return T(newton_options<T>{}.tolerance_ulps) * std::numeric_limits<T>::epsilon();
 }
 
+/// The largest relative difference max |x_a - x_b| / max(1, |x_b|) over the positions and momenta
+/// of two states.
+template <class T, class State>
+T state_difference(const State& sa, const State& sb) {
+  using std::abs;
+  T worst(0);
+  for (Eigen::Index i = 0; i < sb.q.size(); ++i) {
+    worst = std::max<T>(worst, T(abs(T(sa.q[i] - sb.q[i])) / std::max<T>(T(1), T(abs(sb.q[i])))));
+    worst = std::max<T>(worst, T(abs(T(sa.p[i] - sb.p[i])) / std::max<T>(T(1), T(abs(sb.p[i])))));
+  }
+  return worst;
+}
+
 /// The largest relative difference between two states after `steps` steps of each integrator.
 template <class A, class B, class Sys, class T>
 T map_difference(const Sys& sys, const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0, const T& tau, int steps) {
-  using std::abs;
   integrator<A, Sys, T> a(sys, tau);
   integrator<B, Sys, T> b(sys, tau);
   auto sa = a.initial_state(q0, v0);
@@ -156,10 +168,22 @@ T map_difference(const Sys& sys, const vec<T, Sys::dof>& q0, const vec<T, Sys::d
     a.step(sa);
     b.step(sb);
   }
+  return state_difference<T>(sa, sb);
+}
+
+/// The largest relative difference between one step of A and one of B from the same state, over
+/// the states of `steps` steps of B: the maps themselves, without the accumulation of a run.
+template <class A, class B, class Sys, class T>
+T step_difference(const Sys& sys, const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0, const T& tau, int steps) {
+  integrator<A, Sys, T> a(sys, tau);
+  integrator<B, Sys, T> b(sys, tau);
+  auto sb = b.initial_state(q0, v0);
   T worst(0);
-  for (int i = 0; i < Sys::dof; ++i) {
-    worst = std::max<T>(worst, T(abs(T(sa.q[i] - sb.q[i])) / std::max<T>(T(1), T(abs(sb.q[i])))));
-    worst = std::max<T>(worst, T(abs(T(sa.p[i] - sb.p[i])) / std::max<T>(T(1), T(abs(sb.p[i])))));
+  for (int k = 0; k < steps; ++k) {
+    auto sa = sb;
+    a.step(sa);
+    b.step(sb);
+    worst = std::max<T>(worst, state_difference<T>(sa, sb));
   }
   return worst;
 }
@@ -241,27 +265,6 @@ struct lpf_as_nystrom {
     return methods::collocation_nystrom<T, M - 1>(c);
   }
 };
-
-/// The largest relative difference between one step of A and one of B from the same state, over
-/// the states of `steps` steps of B: the maps themselves, without the accumulation of a run.
-template <class A, class B, class Sys, class T>
-T step_difference(const Sys& sys, const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0, const T& tau, int steps) {
-  using std::abs;
-  integrator<A, Sys, T> a(sys, tau);
-  integrator<B, Sys, T> b(sys, tau);
-  auto sb = b.initial_state(q0, v0);
-  T worst(0);
-  for (int k = 0; k < steps; ++k) {
-    auto sa = sb;
-    a.step(sa);
-    b.step(sb);
-    for (int i = 0; i < Sys::dof; ++i) {
-      worst = std::max<T>(worst, T(abs(T(sa.q[i] - sb.q[i])) / std::max<T>(T(1), T(abs(sb.q[i])))));
-      worst = std::max<T>(worst, T(abs(T(sa.p[i] - sb.p[i])) / std::max<T>(T(1), T(abs(sb.p[i])))));
-    }
-  }
-  return worst;
-}
 
 template <class Family, int M, class T>
 void check_lpf_is_nystrom_collocation() {
