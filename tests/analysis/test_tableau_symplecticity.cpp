@@ -82,6 +82,10 @@ TEST_CASE("tableau symplecticity: the defects of printed methods, by hand", "[an
   const auto verlet = symplecticity_conditions(from_text(
       "kind nystrom\nstages 2\nc 0 1\na 0 0 1/2 0\nap 0 0 1/2 1/2\nbbar 1/2 0\nb 1/2 1/2\n"));
   CHECK(verlet.symplectic);
+  // Zero weights: the step is y1 = y0, symplectic, on no stage at all.
+  const auto identity = symplecticity_conditions(from_text("kind rk\nstages 2\nc 0 1\na 0 0 1 0\nb 0 0\n"));
+  CHECK(identity.symplectic);
+  CHECK(identity.irreducible_stages == 0);
 }
 
 TEST_CASE("tableau symplecticity: every rk and prk method of the catalogue agrees with the tree conditions", "[analysis]") {

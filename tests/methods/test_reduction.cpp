@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "catch.hpp"
+#include "geomint/analysis/method_verdicts.hpp"
 #include "geomint/methods/reduction.hpp"
 #include "geomint/methods/tableau_file.hpp"
 
@@ -83,11 +84,24 @@ TEST_CASE("reduction: a prk pair merges only stages equal in both tableaux", "[m
   CHECK(same.method.c == gauss.c);
 }
 
-TEST_CASE("reduction: inconsistent arrays and a method without weights are errors", "[methods]") {
+TEST_CASE("reduction: inconsistent arrays are errors; a method without weights has no stage", "[methods]") {
   auto t = from_text("kind rk\nstages 2\nc 0 1\na 0 0 1 0\nb 1/2 1/2\n");
   t.b.pop_back();
   CHECK_THROWS_AS(irreducible_form(t), std::invalid_argument);
-  CHECK_THROWS_AS(irreducible_form(from_text("kind rk\nstages 2\nc 0 1\na 0 0 1 0\nb 0 0\n")), std::invalid_argument);
+  // b = 0: y1 = y0 whatever the stages are, so every stage goes.
+  const auto none = irreducible_form(from_text("kind rk\nstages 2\nc 0 1\na 0 0 1 0\nb 0 0\n"));
+  CHECK(none.method.stages == 0);
+  CHECK(none.stage_of == std::vector<int>{-1, -1});
+}
+
+TEST_CASE("reduction: a reducible method is symmetric when its irreducible method is", "[methods]") {
+  // An rkn tableau with zero weights is the free drift q1 = q + h v, v1 = v, whose adjoint is
+  // itself; its one printed stage (c = 0) has no mirror (c* = 1), so only the reduction shows it.
+  const auto drift = from_text("kind rkn\nstages 1\nc 0\na 0\nbbar 0\nb 0\n");
+  CHECK_FALSE(geomint::is_symmetric(drift));
+  CHECK(geomint::verdicts(drift).symmetric);
+  // Heun's method with an unused third stage is as unsymmetric as Heun's method.
+  CHECK_FALSE(geomint::verdicts(from_text("kind rk\nstages 3\nc 0 1 1/2\na 0 0 0  1 0 0  1/2 0 0\nb 1/2 1/2 0\n")).symmetric);
 }
 
 }  // namespace reduction_test

@@ -34,7 +34,9 @@
 ///   dissipation, phase lag). Needs sum b = 1, rational polynomials and S <= 8
 ///   (std::domain_error naming which fails); over Q(r) `field_linear_stability(t)` (run time, any
 ///   S) is the same analysis for irrational polynomials (field_stability.hpp).
-/// - `verdicts(t)` (run time): all of them (over field_element: the field path where the rational
+/// - `verdicts(t)` (run time): all of them, symmetry also on the irreducible method of a
+///   reducible tableau (methods/reduction.hpp: the same map; the free drift of an rkn tableau
+///   with zero weights is symmetric, its printed stage is not) (over field_element: the field path where the rational
 ///   one does not decide: field_oscillator, field_rk), with the stability verdict of the CSV column
 ///   `stability`: rk `a-stable` when A-stable (rk_stability.hpp; also when L-stable, see
 ///   `l_stable`), else the kind of its imaginary-axis interval; prk, rkn, nystrom `periodic`
@@ -53,6 +55,7 @@
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/rk_stability.hpp"
 #include "geomint/methods/nystrom_form.hpp"
+#include "geomint/methods/reduction.hpp"
 #include "geomint/methods/tableau.hpp"
 
 namespace geomint {
@@ -359,6 +362,10 @@ method_verdicts verdicts(const methods::tableau_data<K>& t) {
   method_verdicts v;
   v.permutation = symmetry_permutation(t);
   v.symmetric = v.permutation.found;
+  if (!v.symmetric) {  // a reducible method is symmetric if its irreducible method is (the map is the same)
+    const methods::tableau_data<K> reduced = methods::irreducible_form(t).method;
+    v.symmetric = reduced.stages < t.stages && symmetry_permutation(reduced).found;
+  }
   v.stage_order = stage_order(t);
   // result = compute() and decided = true, or the reason it could not be decided.
   auto attempt = [](auto compute, auto& result, bool& decided, std::string& reason) {

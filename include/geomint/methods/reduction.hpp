@@ -191,7 +191,9 @@ int s_classes(tableau_data<K>& t, std::vector<int>& class_of) {
 }  // namespace detail
 
 /// The irreducible method of `t` (see the top of the file); std::invalid_argument for arrays
-/// that do not have the stage count. Needs an exact K (equality decides the classes).
+/// that do not have the stage count. Needs an exact K (equality decides the classes). A method
+/// whose weights all vanish has no stage left: its step is y1 = y0 (rk, prk) or the free drift
+/// q1 = q + h v (rkn, nystrom).
 template <class K>
 irreducible_method<K> irreducible_form(const tableau_data<K>& t) {
   irreducible_method<K> out{t, {}};
@@ -206,7 +208,6 @@ irreducible_method<K> irreducible_form(const tableau_data<K>& t) {
   for (;;) {
     std::vector<int> class_of;
     const int kept = detail::dj_classes(out.method, class_of);
-    if (kept == 0) throw std::invalid_argument("geomint::methods::irreducible_form: every weight is zero (the method does not step)");
     if (kept < out.method.stages) apply(class_of, kept);
     const int classes = detail::s_classes(out.method, class_of);
     if (classes == out.method.stages) return out;

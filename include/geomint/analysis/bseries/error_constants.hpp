@@ -63,7 +63,7 @@ template <class K>
 error_constants<K> principal_error_constants(const methods::nystrom_form<K>& f, int order) {
   const tree_class kind = f.has_velocity_stages ? tree_class::nystrom : tree_class::rkn;
   const int limit = kind == tree_class::rkn ? max_tree_order_rkn : max_tree_order_nystrom;
-  if (order < 1 || order + 1 > limit)
+  if (order < 0 || order + 1 > limit)
     throw std::domain_error("principal_error_constants: the trees of order p + 1 must be at most " + std::to_string(limit));
   const tree_set trees(order + 1, kind);  // the Nystrom trees only (trees.hpp, tree_class)
   return detail::constants_on(trees, elementary_weights(trees, partitioned_form_of(f)), order);
@@ -77,7 +77,7 @@ error_constants<K> principal_error_constants(const tableau_data<K>& t, int order
     return principal_error_constants(methods::nystrom_form_of(t), order);
   const int colours = t.kind == methods::method_kind::rk ? 1 : 2;
   const int limit = colours == 1 ? max_tree_order_one_colour : max_tree_order_two_colours;
-  if (order < 1 || order + 1 > limit)
+  if (order < 0 || order + 1 > limit)
     throw std::domain_error("principal_error_constants: the trees of order p + 1 must be at most " + std::to_string(limit));
   const tree_set trees(order + 1, colours);
   return detail::constants_on(trees, elementary_weights(trees, t), order);

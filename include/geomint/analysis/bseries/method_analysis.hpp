@@ -123,20 +123,15 @@ method_analysis analyse_method(const methods::nystrom_form<K>& f, int order_two_
 template <class K>
 method_analysis analyse_method(const tableau_data<K>& t, int order_one_colour = default_order_one_colour,
                                int order_two_colours = default_order_two_colours) {
-  if (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom)
-  {
-    method_analysis r = analyse_method(methods::nystrom_form_of(t), order_two_colours);
-    const tableau_symplecticity<K> v = symplecticity_conditions(t);
-    r.symplectic = v.symplectic;
-    r.symplecticity_basis = detail::conditions_text(v);
-    return r;
-  }
   method_analysis r;
-  r.colours = t.kind == methods::method_kind::rk ? 1 : 2;
-  r.tree_order = r.colours == 1 ? order_one_colour : order_two_colours;
-  const tree_set trees(r.tree_order, r.colours);
-  const std::vector<K> a = elementary_weights(trees, t);
-  detail::order_of(trees, local_error_coefficients(trees, a), r);
+  if (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom) {
+    r = analyse_method(methods::nystrom_form_of(t), order_two_colours);
+  } else {
+    r.colours = t.kind == methods::method_kind::rk ? 1 : 2;
+    r.tree_order = r.colours == 1 ? order_one_colour : order_two_colours;
+    const tree_set trees(r.tree_order, r.colours);
+    detail::order_of(trees, local_error_coefficients(trees, elementary_weights(trees, t)), r);
+  }
   const tableau_symplecticity<K> v = symplecticity_conditions(t);
   r.symplectic = v.symplectic;
   r.symplecticity_basis = detail::conditions_text(v);
