@@ -48,6 +48,7 @@
 #include "geomint/constrained_integrator.hpp"
 #include "geomint/stepper.hpp"
 // methods as data: exact coefficients, tableaux of every class, their runnable form, the scheme over them
+#include "geomint/methods/algebraic_number.hpp"
 #include "geomint/methods/number_field.hpp"
 #include "geomint/methods/coefficients.hpp"
 #include "geomint/methods/tableau.hpp"

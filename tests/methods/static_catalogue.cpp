@@ -1,9 +1,14 @@
-// Compile-time checks of the catalogue's explicit rational methods (methods/catalogue.hpp)
-// against their published properties: the constexpr exact analysis of analysis/ (order by the
-// Nystrom trees, symplecticity by Suris' conditions, symmetry up to a permutation of stages,
-// linear stability on y'' = -y) over the same constexpr tableaux the integrator runs. The
-// expected values are the sources' (cited per method) or exact mathematics (said where).
+// Compile-time checks of the catalogue's explicit methods (methods/catalogue.hpp) against their
+// published properties: the constexpr exact analysis of analysis/ (order by the Nystrom trees,
+// symplecticity by Suris' conditions, symmetry up to a permutation of stages, linear stability
+// on y'' = -y) over the same constexpr tableaux the integrator runs, over geomint::rational
+// and, for the compositions and McLachlan's splittings, over their number fields
+// (methods/algebraic_number.hpp). The expected values are the sources' (cited per method) or
+// exact mathematics (said where).
+#include "geomint/analysis/bseries/nystrom_weights.hpp"
+#include "geomint/analysis/bseries/series.hpp"
 #include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/method_verdicts.hpp"
 #include "geomint/analysis/order_conditions.hpp"
 #include "geomint/analysis/rkn_tableau.hpp"
 #include "geomint/analysis/scheme_structure.hpp"
@@ -77,5 +82,50 @@ static_assert(!linear_stability(exact_tableau<methods::demp_rkn64>).determinant_
 // part has order 4 too (the conditions there are a subset).
 static_assert(has_order<methods::nystrom4>(4));
 static_assert(!symplecticity(exact_tableau<methods::nystrom4>).symplectic);
+
+// ---- over number fields: the tree order (Nystrom trees of q'' = f(q), series_order), Suris'
+// conditions bbar_i = b_i (1 - c_i), b_i (bbar_j - a_ij) = b_j (bbar_i - a_ji) (Hairer, Lubich &
+// Wanner 2006, Theorem VI.4.10; sufficient), and symmetry up to a permutation of stages ----
+template <class K, int S>
+constexpr int rkn_tree_order(const methods::rkn<K, S>& t, int limit) {
+  const analysis::bseries::tree_set trees(limit, analysis::bseries::tree_class::rkn);
+  return analysis::bseries::series_order(trees, analysis::bseries::elementary_weights(trees, t));
+}
+template <class K, int S>
+constexpr bool suris_conditions(const methods::rkn<K, S>& t) {
+  for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) {
+    if (!(t.bbar[i] == t.b[i] * (K(1) - t.c[i]))) return false;
+    for (std::size_t j = 0; j < static_cast<std::size_t>(S); ++j)
+      if (!(t.b[i] * (t.bbar[j] - t.a[i][j]) == t.b[j] * (t.bbar[i] - t.a[j][i]))) return false;
+  }
+  return true;
+}
+/// The method's rkn tableau; a composition's is its composed tableau (with d = sum gamma = 1).
+template <class Method>
+constexpr auto field_tableau() {
+  if constexpr (requires { methods::tableau_of(Method::tableau()); }) {
+    const auto composed = methods::tableau_of(Method::tableau());
+    if (!(composed.d == 1)) throw "the composition is not consistent";
+    return composed.tableau;
+  } else {
+    return Method::tableau();
+  }
+}
+
+// Forest & Ruth 1990, Yoshida 1990 (the triple jump), Suzuki 1990 (the fractal order 4): order 4
+// (exactly: not 5), symplectic, symmetric. Over Q(2^(1/3)).
+static_assert(rkn_tree_order(field_tableau<methods::forest_ruth>(), 5) == 4);
+static_assert(rkn_tree_order(field_tableau<methods::yoshida_triple_jump>(), 5) == 4);
+static_assert(rkn_tree_order(field_tableau<methods::suzuki4>(), 5) == 4);
+static_assert(suris_conditions(field_tableau<methods::forest_ruth>()) && is_symmetric(field_tableau<methods::forest_ruth>()));
+static_assert(suris_conditions(field_tableau<methods::yoshida_triple_jump>()) && is_symmetric(field_tableau<methods::yoshida_triple_jump>()));
+static_assert(suris_conditions(field_tableau<methods::suzuki4>()) && is_symmetric(field_tableau<methods::suzuki4>()));
+
+// McLachlan 1995, SB3A with m = 4 (over Q(sqrt 14)) and m = 5: order 4, symplectic, symmetric.
+// The order of m = 5 is not here: its weights on the order-5 trees overflow the 512 bits of the
+// exact numbers (a compile error); tests/methods/test_catalogue.cpp checks it at run time.
+static_assert(rkn_tree_order(field_tableau<methods::mclachlan_sb3a4>(), 5) == 4);
+static_assert(suris_conditions(field_tableau<methods::mclachlan_sb3a4>()) && is_symmetric(field_tableau<methods::mclachlan_sb3a4>()));
+static_assert(suris_conditions(field_tableau<methods::mclachlan_sb3a5>()) && is_symmetric(field_tableau<methods::mclachlan_sb3a5>()));
 
 }  // namespace

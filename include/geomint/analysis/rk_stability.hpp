@@ -128,6 +128,15 @@ constexpr void stability_polynomials(const Matrix& a, const Weights& b, std::siz
 /// std::domain_error for an irrational field_element).
 constexpr exact_number to_exact(const rational& x) { return exact_number(x); }
 constexpr exact_number to_exact(const exact_number& x) { return x; }
+/// An algebraic_number (constexpr): its value when rational, else std::domain_error (a compile
+/// error in a constant expression).
+template <auto P>
+constexpr exact_number to_exact(const methods::algebraic_number<P>& x) {
+  static_assert(std::is_same_v<typename methods::algebraic_number<P>::coefficient_type, exact_number>,
+                "geomint: algebraic_number and the exact analyses share one big_rational type");
+  if (!x.is_rational()) throw std::domain_error("the coefficient is not rational (the exact stability verdicts need rational polynomials)");
+  return x.rational_value();
+}
 /// A big_integer<L> from a cpp_int (std::overflow_error when it does not fit).
 template <int L = exact_algebra_limbs>
 big_integer<L> to_exact_integer(boost::multiprecision::cpp_int x) {

@@ -67,13 +67,21 @@ struct big_rational {
     return a;
   }
   friend constexpr big_rational operator+(const big_rational& a, const big_rational& b) {
-    if (a.num.is_zero()) return b;
-    if (b.num.is_zero()) return a;
+    if (a.num.is_zero()) return copy_of(b);
+    if (b.num.is_zero()) return copy_of(a);
     if (a.is_integer() && b.is_integer()) return from_integer(a.num + b.num);
     const big_integer<L> da = a.den(), db = b.den();
     return big_rational(a.num * db + b.num * da, da * db);
   }
-  friend constexpr big_rational operator-(const big_rational& a, const big_rational& b) { return a + (-b); }
+  /// a - b without a copy of b: GCC 12 treats a by-value copy of a subobject of a constexpr
+  /// variable, modified in the callee, as a modification of that variable ("modification of
+  /// 'x' is not a constant expression").
+  friend constexpr big_rational operator-(const big_rational& a, const big_rational& b) {
+    if (b.num.is_zero()) return copy_of(a);
+    if (a.is_integer() && b.is_integer()) return from_integer(a.num - b.num);
+    const big_integer<L> da = a.den(), db = b.den();
+    return big_rational(a.num * db - b.num * da, da * db);
+  }
   friend constexpr big_rational operator*(const big_rational& a, const big_rational& b) {
     if (a.num.is_zero() || b.num.is_zero()) return big_rational();
     if (a.is_integer() && b.is_integer()) return from_integer(a.num * b.num);
@@ -92,6 +100,14 @@ struct big_rational {
   friend constexpr bool operator==(const big_rational&, const big_rational&) = default;
   friend constexpr std::strong_ordering operator<=>(const big_rational& a, const big_rational& b) {
     return a.num * b.den() <=> b.num * a.den();
+  }
+  /// x, member by member into a new object: GCC 12 takes a returned copy of a subobject of a
+  /// constexpr variable, later assigned to, for a modification of that variable.
+  static constexpr big_rational copy_of(const big_rational& x) {
+    big_rational r;
+    r.num = x.num;
+    r.den_minus_one = x.den_minus_one;
+    return r;
   }
   /// An integer n as n/1 (no reduction needed).
   static constexpr big_rational from_integer(const big_integer<L>& n) {

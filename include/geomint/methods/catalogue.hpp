@@ -13,6 +13,10 @@
 /// - The collocation-type families (methods/collocation_families.hpp): Gauss, Radau IIA, Radau
 ///   IA, Lobatto IIIA, IIIB, IIIC and the IIIA-IIIB pair.
 ///
+/// The explicit methods, compositions and splittings are constexpr tableaux, their number fields
+/// algebraic_number (methods/algebraic_number.hpp), so tests/methods/static_catalogue.cpp checks
+/// them in static_assert.
+///
 /// Each entry carries its published order, symplecticity and symmetry with the source that states
 /// them; tests/methods/test_catalogue.cpp checks them against the exact analysis.
 
@@ -23,6 +27,7 @@
 #include <vector>
 
 #include "geomint/core/rational.hpp"
+#include "geomint/methods/algebraic_number.hpp"
 #include "geomint/methods/collocation_families.hpp"
 #include "geomint/methods/composition.hpp"
 #include "geomint/methods/nystrom_form.hpp"
@@ -63,17 +68,22 @@ constexpr rkn<rational, S> with_weights(rkn<rational, S> t, const rational (&bba
   return t;
 }
 
-/// 2^(1/3), the generator of the compositions' field (r^3 = 2 has one real root).
-inline field_element cube_root_of_two() { return field_element::generator(algebraic_field::make({-2, 0, 0, 1})); }
-inline field_element exact(long n, long d = 1) { return field_element(exact_rational(n, d)); }
+/// Q(2^(1/3)), the compositions' field (r^3 = 2 has one real root, in (1, 2]).
+inline constexpr field_polynomial<3> cube_root_of_two_field{{-2, 0, 0, 1}, 1, 2};
+using cube_root_number = algebraic_number<cube_root_of_two_field>;
+constexpr cube_root_number cube_root_of_two() { return cube_root_number::generator(); }
 
 /// Velocity Stormer-Verlet (kick-drift-kick) and position Stormer-Verlet (drift-kick-drift) as
-/// RKN tableaux over field_element, the bases of the compositions.
-inline rkn<field_element, 2> velocity_verlet() {
-  return make_rkn<field_element>({exact(0), exact(1)}, {{exact(0), exact(0)}, {exact(1, 2), exact(0)}}, {exact(1, 2), exact(0)},
-                                 {exact(1, 2), exact(1, 2)});
+/// RKN tableaux over K, the bases of the compositions.
+template <class K>
+constexpr rkn<K, 2> velocity_verlet() {
+  return make_rkn<K>({K(0), K(1)}, {{K(0), K(0)}, {K(rational(1, 2)), K(0)}}, {K(rational(1, 2)), K(0)},
+                     {K(rational(1, 2)), K(rational(1, 2))});
 }
-inline rkn<field_element, 1> position_verlet() { return make_rkn<field_element>({exact(1, 2)}, {{exact(0)}}, {exact(1, 2)}, {exact(1)}); }
+template <class K>
+constexpr rkn<K, 1> position_verlet() {
+  return make_rkn<K>({K(rational(1, 2))}, {{K(0)}}, {K(rational(1, 2))}, {K(1)});
+}
 }  // namespace detail
 
 /// Stormer-Verlet (velocity form): q1 = q + h v + h^2/2 f(q), v1 = v + h/2 (f(q) + f(q1));
@@ -162,9 +172,10 @@ struct nystrom4 {
 /// (1 - theta) h/2, ...). Order 4, symplectic, symmetric.
 struct forest_ruth {
   static constexpr std::string_view name() { return "forest-ruth"; }
-  static auto tableau() {
-    const field_element r = detail::cube_root_of_two(), theta = detail::exact(1) / (detail::exact(2) - r);
-    return composition<rkn<field_element, 1>, 3>{detail::position_verlet(), {theta, detail::exact(1) - theta - theta, theta}};
+  static constexpr auto tableau() {
+    using K = detail::cube_root_number;
+    const K r = detail::cube_root_of_two(), theta = K(1) / (K(2) - r);
+    return composition<rkn<K, 1>, 3>{detail::position_verlet<K>(), {theta, K(1) - theta - theta, theta}};
   }
 };
 
@@ -173,9 +184,10 @@ struct forest_ruth {
 /// symplectic, symmetric.
 struct yoshida_triple_jump {
   static constexpr std::string_view name() { return "yoshida-triple-jump"; }
-  static auto tableau() {
-    const field_element r = detail::cube_root_of_two(), w1 = detail::exact(1) / (detail::exact(2) - r);
-    return composition<rkn<field_element, 2>, 3>{detail::velocity_verlet(), {w1, -r * w1, w1}};
+  static constexpr auto tableau() {
+    using K = detail::cube_root_number;
+    const K r = detail::cube_root_of_two(), w1 = K(1) / (K(2) - r);
+    return composition<rkn<K, 2>, 3>{detail::velocity_verlet<K>(), {w1, -r * w1, w1}};
   }
 };
 
@@ -184,10 +196,11 @@ struct yoshida_triple_jump {
 /// 4^(1/3) = (2^(1/3))^2. Order 4, symplectic, symmetric.
 struct suzuki4 {
   static constexpr std::string_view name() { return "suzuki-4"; }
-  static auto tableau() {
-    const field_element r = detail::cube_root_of_two(), p = detail::exact(1) / (detail::exact(4) - r * r);
-    const field_element middle = detail::exact(1) - detail::exact(4) * p;
-    return composition<rkn<field_element, 2>, 5>{detail::velocity_verlet(), {p, p, middle, p, p}};
+  static constexpr auto tableau() {
+    using K = detail::cube_root_number;
+    const K r = detail::cube_root_of_two(), p = K(1) / (K(4) - r * r);
+    const K middle = K(1) - K(4) * p;
+    return composition<rkn<K, 2>, 5>{detail::velocity_verlet<K>(), {p, p, middle, p, p}};
   }
 };
 
@@ -208,23 +221,24 @@ struct suzuki4 {
 ///   quadratic system is a_1 = -0.670...).
 struct mclachlan_sb3a4 {
   static constexpr std::string_view name() { return "mclachlan-sb3a-4"; }
-  static auto tableau() {
-    using detail::exact;
-    const field_element r = field_element::generator(algebraic_field::make({exact_rational(-14), 0, 1}));
-    const field_element a1 = exact(1, 2) - r / exact(12), a2 = r / exact(12) - exact(1, 3);
-    return detail::kick_drift_rkn<field_element, 4>({exact(1), exact(-1, 2), exact(-1, 2), exact(1)}, {a2, exact(2, 3), a2, a1}, a1);
+  static constexpr field_polynomial<2> field{{-14, 0, 1}, 3, 4};  // sqrt 14
+  static constexpr auto tableau() {
+    using K = algebraic_number<field>;
+    const K r = K::generator(), a1 = K(rational(1, 2)) - r / K(12), a2 = r / K(12) - K(rational(1, 3));
+    return detail::kick_drift_rkn<K, 4>({K(1), K(rational(-1, 2)), K(rational(-1, 2)), K(1)}, {a2, K(rational(2, 3)), a2, a1}, a1);
   }
 };
 struct mclachlan_sb3a5 {
   static constexpr std::string_view name() { return "mclachlan-sb3a-5"; }
-  static auto tableau() {
-    using detail::exact;
-    const field_element r = field_element::generator(algebraic_field::make({exact_rational(-722025967665LL), 0, 1}));
-    const field_element a1 = exact(-229483763, 1729961856) + exact(365, 576653952) * r;
-    const field_element a2 = exact(18550249, 123568704) - exact(1081, 2100667968) * r;
-    const field_element a3 = exact(1, 2) - a1 - a2;
-    const field_element b1 = exact(-3, 73), b2 = exact(17, 59);
-    return detail::kick_drift_rkn<field_element, 5>({b1, b2, exact(2179, 4307), b2, b1}, {a2, a3, a3, a2, a1}, a1);
+  static constexpr field_polynomial<2> field{{-722025967665LL, 0, 1}, 849721, 849722};  // its square root
+  static constexpr auto tableau() {
+    using K = algebraic_number<field>;
+    const K r = K::generator();
+    const K a1 = K(rational(-229483763, 1729961856)) + K(rational(365, 576653952)) * r;
+    const K a2 = K(rational(18550249, 123568704)) - K(rational(1081, 2100667968)) * r;
+    const K a3 = K(rational(1, 2)) - a1 - a2;
+    const K b1 = K(rational(-3, 73)), b2 = K(rational(17, 59));
+    return detail::kick_drift_rkn<K, 5>({b1, b2, K(rational(2179, 4307)), b2, b1}, {a2, a3, a3, a2, a1}, a1);
   }
 };
 
@@ -244,6 +258,10 @@ struct catalogue_entry {
 namespace detail {
 inline field_element to_field(const rational& x) { return field_element(exact_rational(x.num, x.den)); }
 inline const field_element& to_field(const field_element& x) { return x; }
+template <auto P>
+field_element to_field(const algebraic_number<P>& x) {
+  return to_field_element(x);
+}
 
 /// A typed tableau (or composition, by its Nystrom form) as run-time data over field_element.
 template <class Tableau>

@@ -1,13 +1,15 @@
 #pragma once
 /// Exact coefficients to a numeric scalar T at T's full precision: geomint::rational and
-/// big_rational, exact_rational and field_element (methods/number_field.hpp; the generator r
-/// computed once in T by bisection from its rational bracket), and T itself.
+/// big_rational, exact_rational, field_element (methods/number_field.hpp) and algebraic_number
+/// (methods/algebraic_number.hpp; for both the generator r computed once in T by bisection from
+/// its rational bracket), and T itself.
 
 #include <memory>
 #include <type_traits>
 
 #include "geomint/core/big_rational.hpp"
 #include "geomint/core/rational.hpp"
+#include "geomint/methods/algebraic_number.hpp"
 #include "geomint/methods/number_field.hpp"
 
 namespace geomint::methods {
@@ -31,6 +33,14 @@ class coefficient_converter {
       root_ = field_->template root_in<T>();
     }
     return x.template to<T>(root_);
+  }
+  /// Horner at r in T; each coefficient rounded once (r from root_in, once per field and T).
+  template <auto P>
+  T operator()(const algebraic_number<P>& x) const {
+    static const T root = algebraic_number<P>::template root_in<T>();
+    T s(0);
+    for (int k = decltype(P)::degree - 1; k >= 0; --k) s = s * root + (*this)(x.coefficient(k));
+    return s;
   }
 
  private:

@@ -23,6 +23,8 @@
 
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include "geomint/methods/algebraic_number.hpp"
+
 namespace geomint::methods {
 
 /// A rational of any size.
@@ -446,6 +448,25 @@ inline int exact_sign(const field_element& x) {
     if (s == 0) return detail::sign(detail::evaluate(c, mid));  // r = mid, rational after all
     (s == sign_high ? hi : lo) = mid;
   }
+}
+
+/// The run-time element of the same value: Q(r) from P with r the root nearest the middle of
+/// P's bracket (the only root in the bracket, so no other root is as near).
+template <auto P>
+field_element to_field_element(const algebraic_number<P>& x) {
+  using C = typename algebraic_number<P>::coefficient_type;
+  auto to_exact_rational = [](const C& v) {
+    return exact_rational(boost::multiprecision::cpp_int(v.num.str()), boost::multiprecision::cpp_int(v.den().str()));
+  };
+  static const std::shared_ptr<const algebraic_field> field = [] {
+    std::vector<exact_rational> poly;
+    for (const rational& c : P.c) poly.push_back(exact_rational(c.num, c.den));
+    return algebraic_field::make(poly, (exact_rational(P.lo.num, P.lo.den) + exact_rational(P.hi.num, P.hi.den)) / 2);
+  }();
+  const field_element r = field_element::generator(field);
+  field_element out(exact_rational(0));
+  for (int k = decltype(P)::degree - 1; k >= 0; --k) out = out * r + field_element(to_exact_rational(x.coefficient(k)));
+  return out;
 }
 
 }  // namespace geomint::methods
