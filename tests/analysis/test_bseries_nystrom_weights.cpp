@@ -26,6 +26,10 @@ using methods::field_element;
 
 field_element to_field(const geomint::rational& x) { return field_element(exact_rational(x.num, x.den)); }
 const field_element& to_field(const field_element& x) { return x; }
+template <auto P>
+field_element to_field(const methods::algebraic_number<P>& x) {
+  return methods::to_field_element(x);
+}
 
 /// A typed tableau with its coefficients as field_element (the run-time data's type).
 template <class K, int S>
@@ -54,8 +58,10 @@ methods::nystrom<field_element, S> over_field(const methods::nystrom<K, S>& t) {
   return out;
 }
 template <class Base, int M>
-const methods::composition<Base, M>& over_field(const methods::composition<Base, M>& t) {
-  return t;
+auto over_field(const methods::composition<Base, M>& t) {
+  methods::composition<decltype(over_field(t.base)), M> out{over_field(t.base), {}};
+  for (std::size_t l = 0; l < static_cast<std::size_t>(M); ++l) out.gamma[l] = to_field(t.gamma[l]);
+  return out;
 }
 
 /// Whether the method has velocity stages (weights on the trees of q'' = F(q, q')).
