@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@ const char* usage =
     "usage: geomint-workprecision [--system pendulum|kepler|outer-solar] [--digits 16|50] [--csv]\n"
     "                             [--t-end T (0..10^6)] [--max-seconds S (> 0)] [--methods a,b,...]\n"
     "                             [--plain-summation] [--passes N (1..10)]\n"
+    "                             [--scalar cpp_bin_float_50|dd_real]\n"
     "Work-precision of geomint's variational integrators (LPF on Gauss interior nodes in its\n"
     "Newton and its fixed-point form, lpf-fixed-point-m*, and Galerkin up to m = 16, and more;\n"
     "in double also lpf-fixed-point-m*-stop-on-rate, whose sweeps stop on their contraction rate)\n"
@@ -39,6 +41,9 @@ const char* usage =
     "in the wider scalar.\n"
     "--digits 16: double, T = 1000 (default), errors down to 1e-13, --max-seconds default 1.\n"
     "--digits 50: cpp_bin_float_50, T = 100 (default), errors down to 1e-40, --max-seconds default 4.\n"
+    "--scalar dd_real (with --digits 50, where built with libqd): that regime in libqd's\n"
+    "double-double (31 digits, round-off near 1e-31): LPF's fixed-point form m = 8, 12, 16 and\n"
+    "Odeint's symplectic_rkn_sb3a_m4_mclachlan and runge_kutta_fehlberg78.\n"
     "Fixed-step methods: tau = T/steps shrinks by 2^(1/4); adaptive ones: tolerance by 10^(1/4);\n"
     "a sweep stops below the error floor, when the error stops improving, or when one run takes\n"
     "more than S CPU seconds: such a run is stopped there (checked every 256 steps; the first\n"
@@ -62,6 +67,7 @@ const char* usage =
 
 int main(int argc, char** argv) {
   geomint::workprecision::settings o;
+  std::optional<std::string> scalar;
   geomint::cli::parser cl("geomint-workprecision", usage);
   cl.toggle("--csv", [&] { o.csv = true; })
       .toggle("--plain-summation", [&] { o.compensated = false; })
@@ -75,11 +81,35 @@ int main(int argc, char** argv) {
       .value("--max-seconds",
              [&](const std::string& v) { o.max_seconds = geomint::cli::parse_real("--max-seconds", v, geomint::cli::real_bound::positive); })
       .value("--methods", [&](const std::string& v) { o.only = geomint::cli::split_list("--methods", v); })
-      .value("--passes", [&](const std::string& v) { o.passes = geomint::cli::parse_integer<int>("--passes", v, 1, 10); });
+      .value("--passes", [&](const std::string& v) { o.passes = geomint::cli::parse_integer<int>("--passes", v, 1, 10); })
+      .value("--scalar", [&](const std::string& v) { scalar = geomint::cli::parse_choice("--scalar", v, {"double", "cpp_bin_float_50", "dd_real"}); });
   if (const auto done = cl.parse(argc, argv)) return *done;
+  // The scalar of the regime: its default, or --scalar where the regime and the build have it.
+  const std::string regime_scalar = o.digits == 16 ? "double" : "cpp_bin_float_50";
+  o.scalar = scalar.value_or(regime_scalar);
+  const bool double_double = o.scalar == "dd_real" && o.digits == 50;
+  if (o.scalar != regime_scalar && !double_double) {
+    std::cerr << "geomint-workprecision: --scalar " << o.scalar << " does not run --digits " << o.digits
+              << " (expected " << regime_scalar << (o.digits == 50 ? " or dd_real" : "") << ")\n"
+              << usage;
+    return geomint::cli::exit_usage;
+  }
+#if !GEOMINT_HAVE_QD
+  if (double_double) {
+    std::cerr << "geomint-workprecision: --scalar dd_real is not compiled into this build (libqd, Debian libqd-dev, was not found)\n";
+    return geomint::cli::exit_usage;
+  }
+#endif
   try {
     using namespace geomint::workprecision;
     int rc = 0;
+#if GEOMINT_HAVE_QD
+    if (double_double) {
+      if (o.system == "kepler") rc = run_regime_double_double<kepler_problem>(o);
+      else if (o.system == "outer-solar") rc = run_regime_double_double<outer_solar_problem>(o);
+      else rc = run_regime_double_double<pendulum_problem>(o);
+    } else
+#endif
     if (o.system == "kepler") rc = o.digits == 16 ? run_regime<kepler_problem, 16>(o) : run_regime<kepler_problem, 50>(o);
     else if (o.system == "outer-solar")
       rc = o.digits == 16 ? run_regime<outer_solar_problem, 16>(o) : run_regime<outer_solar_problem, 50>(o);

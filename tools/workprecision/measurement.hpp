@@ -37,6 +37,7 @@ struct regime {
 struct settings {
   std::string system = "pendulum";
   int digits = 16;
+  std::string scalar = "double";  ///< --scalar (its default: double, or cpp_bin_float_50 for --digits 50)
   bool csv = false;
   std::optional<double> t_end;
   std::optional<double> max_seconds;
@@ -60,7 +61,7 @@ template <class R, class T, int n>
 double phase_error(const arr<T, n>& q, const arr<T, n>& p, const analysis::closed_form_state<R, n>& ref) {
   R sum(0);
   for (std::size_t i = 0; i < std::size_t(n); ++i) {
-    const R dq = R(q[i]) - ref.q[i], dp = R(p[i]) - ref.p[i];
+    const R dq = widen<R>(q[i]) - ref.q[i], dp = widen<R>(p[i]) - ref.p[i];
     sum += dq * dq + dp * dp;
   }
   using std::sqrt;
@@ -104,7 +105,7 @@ std::optional<result> measure(const method<T, P::n>& m, long knob, const T& t_en
   if (!best) return std::nullopt;
   r.cpu = *best;
   r.steps = steps;
-  r.tau = static_cast<double>(T(t_end / T(std::max(1L, steps))));
+  r.tau = to_double(T(t_end / from_int64<T>(std::max(1L, steps))));
   r.final_error = phase_error<R, T, P::n>(q, p, ref);
   arr<T, n> q2 = P::template q0<T>(), p2 = P::template v0<T>();
   const T E0 = P::energy(q2, p2);
@@ -116,7 +117,7 @@ std::optional<result> measure(const method<T, P::n>& m, long knob, const T& t_en
   };
   run_budget::current().start(4 * max_seconds);
   if (m.run(knob, t_end, q2, p2, &monitor) < 0) return std::nullopt;
-  r.max_energy_error = static_cast<double>(worst);
+  r.max_energy_error = to_double(worst);
   return r;
 }
 
@@ -146,7 +147,7 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
   // An integer T exactly in T and R (from its integer value, not through double).
   const auto whole = checked_integer<long>(t_end_d);
   const bool integer = whole && double(*whole) == t_end_d;
-  const T t_end = integer ? T(*whole) : T(t_end_d);
+  const T t_end = integer ? from_int64<T>(*whole) : T(t_end_d);
   const auto ref = P::template exact<R>(integer ? R(*whole) : R(t_end_d));
   if (!o.only.empty()) {
     for (const auto& name : o.only)
@@ -154,7 +155,7 @@ int run_sweeps(const settings& o, const regime& g, std::vector<method<T, P::n>> 
         throw std::invalid_argument("unknown method '" + name + "' (see --help)");
     std::erase_if(all, [&](const auto& m) { return std::find(o.only.begin(), o.only.end(), m.name) == o.only.end(); });
   }
-  const std::string scalar = g.digits == 16 ? "double" : "cpp_bin_float_50";
+  const std::string scalar = o.scalar;
   std::map<std::string, std::vector<result>> by_method;
   tools::progress bar("geomint-workprecision", all.size() * static_cast<std::size_t>(o.passes), "ladders");
   for (const auto& m : all) {

@@ -88,7 +88,7 @@ struct method {
 template <class T>
 T tolerance_of(long knob) {
   using std::pow;
-  return T(pow(T(10), T(-knob) / T(4)));
+  return T(pow(T(10), T(-from_int64<T>(knob)) / T(4)));
 }
 
 /// A geomint scheme; `compensated`: compensated summation of the q, p update
@@ -102,7 +102,7 @@ method<T, P::n> geomint_method(std::string name, long first_steps, bool compensa
   m.run = [compensated, stop_on_rate](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& v,
                                       const monitor_fn<T, n>* mon) -> long {
     using I = integrator<Scheme, typename P::sys, T>;
-    I integ(typename P::sys{}, T(t_end / T(steps)));
+    I integ(typename P::sys{}, T(t_end / from_int64<T>(steps)));
     integ.set_compensated_summation(compensated);
     if (stop_on_rate) integ.options().stop_on_rate = true;
     // The shared state is (q, v); the scheme's is (q, p = M v).
@@ -143,7 +143,7 @@ method<T, P::n> odeint_rkn(std::string name, long first_steps) {
     Stepper stepper;
     auto coor = [](const arr<T, n>& pp, arr<T, n>& dqdt) { dqdt = pp; };
     auto mom = [](const arr<T, n>& qq, arr<T, n>& dpdt) { P::force(qq, dpdt); };
-    const T tau = t_end / T(steps);
+    const T tau = t_end / from_int64<T>(steps);
     T t(0);
     const run_budget& budget = run_budget::current();
     for (long k = 0; k < steps; ++k) {
@@ -165,7 +165,7 @@ method<T, P::n> odeint_verlet(std::string name, long first_steps) {
   m.run = [](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& p, const monitor_fn<T, n>* mon) -> long {
     odeint::velocity_verlet<arr<T, n>, T> stepper;
     auto accel = [](const arr<T, n>& qq, const arr<T, n>&, arr<T, n>& a, const T&) { P::force(qq, a); };
-    const T tau = t_end / T(steps);
+    const T tau = t_end / from_int64<T>(steps);
     T t(0);
     const run_budget& budget = run_budget::current();
     for (long k = 0; k < steps; ++k) {
@@ -186,7 +186,7 @@ method<T, P::n> composition_method(std::string name, const analysis::symmetric_c
   method<T, n> m{std::move(name), true, knob_kind::steps, first_steps, {}};
   m.run = [gamma = c.gamma()](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& p,
                               const monitor_fn<T, n>* mon) -> long {
-    const T tau = t_end / T(steps);
+    const T tau = t_end / from_int64<T>(steps);
     arr<T, n> f;
     P::force(q, f);
     auto force = [](const arr<T, n>& qq, arr<T, n>& ff) { P::force(qq, ff); };
@@ -231,7 +231,7 @@ long adaptive_run(Stepper& stepper, const T& t_end, arr<T, P::n>& q, arr<T, P::n
   arr<T, n> qq, pp;
   // Below this step size the controller has met round-off (tolerance near the scalar's
   // precision): reported as a failed run instead of creeping on.
-  const T dt_min = t_end / T(1000000000L);
+  const T dt_min = t_end / T(1000000000);
   const run_budget& budget = run_budget::current();
   for (long attempts = 0; t < t_end; ++attempts) {
     if (attempts > 20000000L || dt < dt_min) return -1;

@@ -1,6 +1,10 @@
 /// geomint-workprecision: the method lists of both problems in the digits GEOMINT_WP_DIGITS; one
-/// translation unit per digits (CMakeLists.txt).
+/// translation unit per digits, and one for libqd's dd_real at 50 digits' regime
+/// (GEOMINT_WP_DOUBLE_DOUBLE; CMakeLists.txt).
 #include <boost/multiprecision/cpp_bin_float.hpp>
+#if GEOMINT_WP_DOUBLE_DOUBLE
+#include "geomint/core/qd.hpp"
+#endif
 
 // Boost 1.74's explicit_error_generic_rk copy constructor reads members that its default
 // constructor leaves empty (resized before use); GCC 12 flags the copy inside
@@ -18,6 +22,12 @@ template <>
 struct boost::numeric::odeint::detail::extract_value_type<boost::multiprecision::cpp_bin_float_50, void> {
   using type = boost::multiprecision::cpp_bin_float_50;
 };
+#if GEOMINT_WP_DOUBLE_DOUBLE
+template <>
+struct boost::numeric::odeint::detail::extract_value_type<dd_real, void> {
+  using type = dd_real;
+};
+#endif
 
 namespace geomint::workprecision {
 namespace {
@@ -125,8 +135,48 @@ std::vector<method<T, P::n>> methods_50(bool compensated) {
   return all;
 }
 
+/// libqd's dd_real at 50 digits' regime (1e-30 at T = 100): LPF's fixed-point form and the
+/// explicit Odeint peers. Odeint's bulirsch_stoer, the Taylor-series flow, the compositions
+/// (refined by Eigen's ColPivHouseholderQR) and the Newton forms are left out: they construct
+/// their scalar from 64-bit integers, which dd_real cannot (its constructors from int and double
+/// are both candidates).
+template <class P, class T>
+std::vector<method<T, P::n>> methods_double_double(bool compensated) {
+  using namespace geomint;
+  using rkn_m4 = odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>;
+  const double scale = P::n > 8 ? 0.05 : 1;
+  auto steps = [scale](long base) { return std::max(1L, std::lround(double(base) * scale)); };
+  std::vector<method<T, P::n>> all;
+  all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8", steps(200), compensated));
+  all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12", steps(100), compensated));
+  all.push_back(geomint_method<P, lpf_fixed_point<16>, T>("lpf-fixed-point-m16", steps(100), compensated));
+  all.push_back(odeint_rkn<P, rkn_m4, T>("odeint-symplectic_rkn_sb3a_m4_mclachlan", steps(10000)));
+  all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 48));
+  return all;
+}
+
+/// The sweeps of one problem in the scalar T, against the reference in R.
+template <class P, class T, class R, bool multiprecision>
+int run_in(const settings& o) {
+  std::vector<method<T, P::n>> all;
+  if constexpr (P::n > 8) all = methods_large<P, T, multiprecision>(o.compensated);
+  else if constexpr (multiprecision) all = methods_50<P, T>(o.compensated);
+  else all = methods_16<P, T>(o.compensated);
+  return run_sweeps<P, T, R>(o, multiprecision ? regime_50() : regime_16(), std::move(all));
+}
+
 }  // namespace
 
+#if GEOMINT_WP_DOUBLE_DOUBLE
+template <class P>
+int run_regime_double_double(const settings& o) {
+  using R = boost::multiprecision::cpp_bin_float_100;
+  return run_sweeps<P, dd_real, R>(o, regime_50(), methods_double_double<P, dd_real>(o.compensated));
+}
+template int run_regime_double_double<pendulum_problem>(const settings&);
+template int run_regime_double_double<kepler_problem>(const settings&);
+template int run_regime_double_double<outer_solar_problem>(const settings&);
+#else
 template <class P, int Digits>
 int run_regime(const settings& o) {
 #if GEOMINT_WP_STUB
@@ -138,16 +188,13 @@ int run_regime(const settings& o) {
   constexpr bool multiprecision = Digits != 16;
   using T = std::conditional_t<multiprecision, boost::multiprecision::cpp_bin_float_50, double>;
   using R = std::conditional_t<multiprecision, boost::multiprecision::cpp_bin_float_100, boost::multiprecision::cpp_bin_float_50>;
-  std::vector<method<T, P::n>> all;
-  if constexpr (P::n > 8) all = methods_large<P, T, multiprecision>(o.compensated);
-  else if constexpr (multiprecision) all = methods_50<P, T>(o.compensated);
-  else all = methods_16<P, T>(o.compensated);
-  return run_sweeps<P, T, R>(o, multiprecision ? regime_50() : regime_16(), std::move(all));
+  return run_in<P, T, R, multiprecision>(o);
 #endif
 }
 
 template int run_regime<pendulum_problem, GEOMINT_WP_DIGITS>(const settings&);
 template int run_regime<kepler_problem, GEOMINT_WP_DIGITS>(const settings&);
 template int run_regime<outer_solar_problem, GEOMINT_WP_DIGITS>(const settings&);
+#endif
 
 }  // namespace geomint::workprecision

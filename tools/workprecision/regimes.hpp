@@ -13,5 +13,9 @@ inline regime regime_50() { return {50, 100, 1e-40, {{1e-30, 0.1}}, {1e-20, 1e-3
 /// The sweeps of one (problem, digits) pair, defined in regime.cpp (one translation unit per digits).
 template <class Problem, int Digits>
 int run_regime(const settings&);
+/// The 50 digits' regime in libqd's dd_real (--scalar dd_real), where libqd is found
+/// (GEOMINT_HAVE_QD).
+template <class Problem>
+int run_regime_double_double(const settings&);
 
 }  // namespace geomint::workprecision

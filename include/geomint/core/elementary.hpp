@@ -152,7 +152,7 @@ bool sin_cos_by_quadrant(const T& x, std::pair<T, T>& out) {
   using std::round;
   using std::sin;
   const T largest = T(1) / (T(16) * std::numeric_limits<T>::epsilon());
-  if (!(abs(x) < largest && abs(x) < T(std::int64_t(1) << 60))) return false;
+  if (!(abs(x) < largest && abs(x) < from_int64<T>(std::int64_t(1) << 60))) return false;
   const T k = T(round(T(x * boost::math::constants::two_div_pi<T>())));
   const T k_mod_4 = T(k - T(4) * T(floor(T(k / T(4)))));  // exact: k is an integer below 2^60
   const int quadrant = k_mod_4 < T(1) ? 0 : k_mod_4 < T(2) ? 1 : k_mod_4 < T(3) ? 2 : 3;
@@ -181,7 +181,7 @@ T from_double(double x) {
       int e = 0;
       static_assert(std::numeric_limits<double>::digits == 53, "geomint::from_double: IEEE double expected");
       const double m = std::frexp(x, &e);  // x = m 2^e, |m| in [1/2, 1): m 2^53 is an integer
-      return T(ldexp(T(static_cast<long long>(m * 0x1p53)), e - std::numeric_limits<double>::digits));
+      return T(ldexp(from_int64<T>(static_cast<long long>(m * 0x1p53)), e - std::numeric_limits<double>::digits));
     }
   }
   return T(x);

@@ -333,10 +333,13 @@ bool exact_dot_into(T& out, const T* a, const T* b, std::size_t count, std::size
 
 /// x rounded to the nearest double, ties to even, as static_cast<double>(x) rounds: for
 /// exact_mantissa_arithmetic types from the mantissa's top bits where the result is a normal
-/// double (Boost's conversion shifts the whole mantissa and rounds generically), else the cast.
+/// double (Boost's conversion shifts the whole mantissa and rounds generically); for a sum of
+/// doubles (core/scalar_traits.hpp), its leading term; else the cast.
 template <class T>
 double to_double(const T& x) {
-  if constexpr (exact_mantissa_arithmetic_v<T>) {
+  if constexpr (double_expansion<T>::value) {
+    return double_expansion<T>::term(x, 0);
+  } else if constexpr (exact_mantissa_arithmetic_v<T>) {
     using traits = exact_mantissa_arithmetic<T>;
     using backend = typename traits::backend;
     using limb = unsigned long long;
@@ -365,8 +368,10 @@ double to_double(const T& x) {
                            (kept & ((limb(1) << 52) - 1));
       return std::bit_cast<double>(pattern);
     }
+    return static_cast<double>(x);
+  } else {
+    return static_cast<double>(x);
   }
-  return static_cast<double>(x);
 }
 
 /// out = a b, rounded once as a * b rounds (out may alias a or b): for

@@ -16,6 +16,8 @@
 #include <string>
 #include <type_traits>
 
+#include "geomint/core/scalar_traits.hpp"
+
 namespace geomint {
 
 namespace core::detail {
@@ -190,7 +192,7 @@ struct rational {
   /// (none when they fit T's mantissa) and one for the quotient.
   template <class T>
   constexpr T to() const {
-    return T(num) / T(den);
+    return from_int64<T>(num) / from_int64<T>(den);
   }
 
   std::string str() const {

@@ -6,6 +6,7 @@
 /// core/multiprecision.hpp needs neither core/mantissa.hpp nor linalg/types.hpp, and parses no
 /// Eigen matrix code of geomint's own.
 
+#include <cstdint>
 #include <type_traits>
 
 namespace geomint {
@@ -29,5 +30,38 @@ struct exact_mantissa_arithmetic : std::false_type {};
 
 template <class T>
 inline constexpr bool exact_mantissa_arithmetic_v = exact_mantissa_arithmetic<T>::value;
+
+/// Whether T is an unevaluated sum of `terms` doubles, ordered by magnitude and
+/// non-overlapping, built by `make(const double*)`: false here; libqd's dd_real and qd_real are
+/// (core/qd.hpp). Exact rationals convert to such a T term by term (methods/number_field.hpp).
+template <class T>
+struct double_expansion : std::false_type {};
+
+/// x in a wider type R: a sum of doubles term by term (exact when R spans its terms, as 100
+/// digits span a dd_real), other types by R's conversion.
+template <class R, class T>
+R widen(const T& x) {
+  if constexpr (double_expansion<T>::value) {
+    R sum(0);
+    for (int k = 0; k < double_expansion<T>::terms; ++k) sum += R(double_expansion<T>::term(x, k));
+    return sum;
+  } else {
+    return R(x);
+  }
+}
+
+/// T from a 64-bit integer, exactly: T's own constructor where it has one; otherwise (libqd's
+/// types construct from int and double only) from its upper and lower 32 bits, each exact in a
+/// double, and an exact product by 2^32.
+template <class T>
+constexpr T from_int64(std::int64_t v) {
+  if constexpr (std::is_constructible_v<T, std::int64_t>) {
+    return T(v);
+  } else {
+    constexpr std::int64_t base = std::int64_t(1) << 32;
+    const std::int64_t hi = v / base, lo = v % base;
+    return T(static_cast<double>(hi)) * T(static_cast<double>(base)) + T(static_cast<double>(lo));
+  }
+}
 
 }  // namespace geomint

@@ -23,6 +23,7 @@
 
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include "geomint/core/scalar_traits.hpp"
 #include "geomint/methods/algebraic_number.hpp"
 
 namespace geomint::methods {
@@ -30,14 +31,25 @@ namespace geomint::methods {
 /// A rational of any size.
 using exact_rational = boost::multiprecision::cpp_rational;
 
-/// The nearest T to an exact rational: correctly rounded conversion for built-in types, the
-/// multiprecision type's own rational conversion otherwise.
+/// The nearest T to an exact rational: correctly rounded conversion for built-in types; for a
+/// sum of doubles (core/scalar_traits.hpp), each term the correctly rounded remainder of the
+/// terms before it (within half a unit of the sum's last bit); the multiprecision type's own
+/// rational conversion otherwise.
 template <class T>
 T rational_to(const exact_rational& x) {
-  if constexpr (std::is_floating_point_v<T>)
+  if constexpr (std::is_floating_point_v<T>) {
     return x.template convert_to<T>();
-  else
+  } else if constexpr (double_expansion<T>::value) {
+    double terms[double_expansion<T>::terms];
+    exact_rational rest = x;
+    for (double& t : terms) {
+      t = rest.template convert_to<double>();
+      rest -= exact_rational(t);
+    }
+    return double_expansion<T>::make(terms);
+  } else {
     return T(x);
+  }
 }
 
 namespace detail {

@@ -41,11 +41,11 @@ class stages_in_double {
                    const mat<T, n>& minv) {
     for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I)
       for (std::size_t J = 0; J < static_cast<std::size_t>(S); ++J) {
-        mu_[I][J] = static_cast<double>(mu[I][J]);
-        extrapolate_[I][J] = static_cast<double>(extrapolate[I][J]);
+        mu_[I][J] = to_double(mu[I][J]);
+        extrapolate_[I][J] = to_double(extrapolate[I][J]);
       }
     for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n; ++c) minv_(r, c) = static_cast<double>(minv(r, c));
+      for (int c = 0; c < n; ++c) minv_(r, c) = to_double(minv(r, c));
   }
 
   /// dG/dF at the stage points Q, formed and factorised in double (partial pivoting: the matrix

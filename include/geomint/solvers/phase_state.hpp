@@ -94,7 +94,7 @@ struct phase_state {
     q = q1;
     p = p1;
     step = *next;
-    t = t0 + T(step - k0) * tau;
+    t = t0 + from_int64<T>(step - k0) * tau;
   }
   /// Commits a successful step with its new compensation terms.
   void commit(const vec<T, n>& q1, const vec<T, n>& p1, const phase_carry<T, n>& carry1, const T& tau) {

@@ -42,6 +42,7 @@
 
 #include <Eigen/Core>
 
+#include "geomint/core/mantissa.hpp"
 #include "geomint/linalg/lu_small.hpp"
 #include "geomint/mechanics/lagrangian.hpp"
 #include "geomint/solvers/newton.hpp"
@@ -220,8 +221,8 @@ struct step_monitor {
     auto refuse = [&](monitor_check c, const T& observed, const T& bound) {
       st.reason = step_failure::left_regime;
       st.regime_check = c;
-      st.observed = static_cast<double>(observed);
-      st.bound = static_cast<double>(bound);
+      st.observed = to_double(observed);
+      st.bound = to_double(bound);
     };
     const T inf = std::numeric_limits<T>::infinity();
     if (!is_finite(before.energy) || !is_finite(after.energy) || !is_finite(before.p_qdot) || !is_finite(after.p_qdot) ||
