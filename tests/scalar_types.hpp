@@ -1,5 +1,6 @@
 #pragma once
-/// The scalar types every runtime test is instantiated for.
+/// The scalar types every runtime test is instantiated for: with MPFR and libqd (Debian
+/// libmpfr-dev, libqd-dev) also mpfr_float_100, dd_real and qd_real.
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <geomint/core/multiprecision.hpp>
 #include <cmath>
@@ -7,6 +8,9 @@
 #include <tuple>
 #ifdef GEOMINT_HAVE_MPFR
 #include <boost/multiprecision/mpfr.hpp>
+#endif
+#ifdef GEOMINT_HAVE_QD
+#include <geomint/core/qd.hpp>
 #endif
 
 namespace geomint::test {
@@ -19,8 +23,12 @@ using boost::multiprecision::mpfr_float_100;
 /// The clang build (with the sanitizers): one built-in and one multiprecision type keep its
 /// build short. The gcc preset runs all types.
 using scalar_types = std::tuple<double, cpp_bin_float_50>;
+#elif defined(GEOMINT_HAVE_MPFR) && defined(GEOMINT_HAVE_QD)
+using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100, mpfr_float_100, dd_real, qd_real>;
 #elif defined(GEOMINT_HAVE_MPFR)
 using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100, mpfr_float_100>;
+#elif defined(GEOMINT_HAVE_QD)
+using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100, dd_real, qd_real>;
 #else
 using scalar_types = std::tuple<double, long double, cpp_bin_float_50, cpp_bin_float_100>;
 #endif

@@ -33,10 +33,24 @@ std::vector<T> chebyshev_reference(int m) {
   return c;
 }
 
+/// Boost.Math's legendre_p_zeros in T; for a sum of doubles (libqd's types, which Boost.Math
+/// cannot take), in 150 digits and rounded term by term to T.
+template <class T>
+std::vector<T> legendre_zeros(int n) {
+  if constexpr (geomint::double_expansion<T>::value) {
+    using H = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<150>>;
+    std::vector<T> out;
+    for (const H& x : boost::math::legendre_p_zeros<H>(n)) out.push_back(geomint::narrow<T>(x));
+    return out;
+  } else {
+    return boost::math::legendre_p_zeros<T>(n);
+  }
+}
+
 template <class T>
 std::vector<T> gauss_interior_reference(int m) {
   // legendre_p_zeros(n) returns the non-negative zeros x of P_n, ascending; c = (1 -+ x)/2.
-  const std::vector<T> zeros = boost::math::legendre_p_zeros<T>(m - 1);
+  const std::vector<T> zeros = legendre_zeros<T>(m - 1);
   std::vector<T> c{T(0), T(1)};
   for (const T& x : zeros) {
     c.push_back(T((T(1) - x) / T(2)));

@@ -13,6 +13,9 @@
 
 #include "catch.hpp"
 #include "geomint/analysis/closed_form_flows.hpp"
+#include "geomint/analysis/composition.hpp"
+#include "geomint/analysis/reference_flow.hpp"
+#include "geomint/core/checked_cast.hpp"
 #include "geomint/core/elementary.hpp"
 #include "geomint/core/qd.hpp"
 #include "geomint/integrator.hpp"
@@ -81,6 +84,13 @@ TEMPLATE_TEST_CASE("qd: 64-bit integers, frexp and round are exact", "[core][qd]
   int e = 0;
   frexp(below_half, &e);
   CHECK(e == -1);
+  // checked_integer (core/checked_cast.hpp): the exact integer, also 2^63 - 1 = 2^63 + (-1),
+  // and nothing past the range.
+  CHECK(geomint::checked_integer<std::int64_t>(geomint::from_int64<T>(std::numeric_limits<std::int64_t>::max())) ==
+        std::numeric_limits<std::int64_t>::max());
+  CHECK(geomint::checked_integer<std::int64_t>(T(T(-7) / T(2))) == -3);
+  CHECK(!geomint::checked_integer<std::int64_t>(T(ldexp(T(1), 63))));
+  CHECK(trunc(T(T(-7) / T(2))) == T(-3));
   // round: half away from zero, as std::round.
   CHECK(round(T(2.5)) == T(3));
   CHECK(round(T(-2.5)) == T(-3));
@@ -132,6 +142,41 @@ TEST_CASE("qd: the pendulum in dd_real follows the exact flow to dd_real's round
   CHECK(abs(geomint::widen<R>(s.q[0]) - exact.q[0]) <= R(20) * eps);
   CHECK(abs(geomint::widen<R>(s.p[0]) - exact.p[0]) <= R(20) * eps);
   CHECK(abs(geomint::widen<R>(s.q[0]) - exact.q[0]) > R(0));  // it ran in dd_real, not exactly
+}
+
+TEMPLATE_TEST_CASE("qd: the compositions' coefficients satisfy their order conditions in T", "[core][qd]", dd_real, qd_real) {
+  // Refined in 100 digits and rounded to T (analysis/composition.hpp); the order conditions of
+  // the published orders (Yoshida 6, Kahan & Li 8, Sofroniou & Spaletta 10; words of the free
+  // algebra) evaluated in T hold to T's round-off, those of two orders more do not.
+  using T = TestType;
+  using C = geomint::analysis::symmetric_composition<T>;
+  const T eps = T(std::numeric_limits<T>::epsilon());
+  for (const C& c : {C::yoshida6(), C::kahan_li8(), C::sofroniou_spaletta10()}) {
+    INFO(c.name());
+    CHECK(c.order_defect() <= T(64) * eps);
+    CHECK(c.next_order_defect() > T(1 << 20) * eps);
+    T sum(0);
+    for (const T& g : c.gamma()) sum += g;
+    CHECK(abs(sum - T(1)) <= T(c.stages()) * eps);
+  }
+}
+
+TEST_CASE("qd: the Taylor-series flow in dd_real follows the pendulum's exact flow", "[core][qd]") {
+  // analysis/reference_flow.hpp in dd_real (its Taylor coefficients take their integers through
+  // from_int64) against the closed form in 50 digits at t = 10; its steps are chosen for a
+  // truncation below dd_real's epsilon, so what remains is round-off: a few units of epsilon
+  // (64 leaves room for its growth over the steps to t = 10).
+  using T = dd_real;
+  using R = boost::multiprecision::cpp_bin_float_50;
+  geomint::vec<T, 1> q, p;
+  q[0] = T(1);
+  p[0] = T(0);
+  geomint::analysis::reference_flow<geomint::systems::pendulum, T> flow(q, p);
+  flow.advance_to(T(10));
+  const auto exact = geomint::analysis::pendulum_from_rest<R>(R(1), R(10));
+  const R eps = geomint::widen<R>(T(std::numeric_limits<T>::epsilon()));
+  CHECK(abs(geomint::widen<R>(flow.q()[0]) - exact.q[0]) <= R(64) * eps);
+  CHECK(abs(geomint::widen<R>(flow.qdot()[0]) - exact.p[0]) <= R(64) * eps);
 }
 
 TEMPLATE_TEST_CASE("qd: the harmonic oscillator follows its exact flow to the scalar's round-off", "[core][qd]", dd_real,

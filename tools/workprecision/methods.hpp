@@ -305,12 +305,12 @@ method<T, P::n> taylor_method(std::string name) {
     // refused before the first step), then 256 Taylor steps at a time between two looks at the
     // clock; the flow's t + h == t check ends a run that cannot reach t_end.
     constexpr long max_steps = analysis::reference_flow<typename P::sys, T>::default_max_steps;
-    if (flow.estimated_steps(t_end) > T(max_steps))
-      throw std::length_error("taylor-series: T = " + std::to_string(static_cast<double>(t_end)) + " needs more than " +
+    if (flow.estimated_steps(t_end) > from_int64<T>(max_steps))
+      throw std::length_error("taylor-series: T = " + std::to_string(to_double(t_end)) + " needs more than " +
                               std::to_string(max_steps) + " Taylor steps");
     const run_budget& budget = run_budget::current();
     for (long k = 1; k <= samples; ++k) {
-      const T target = k == samples ? t_end : T(t_end * T(k) / T(samples));
+      const T target = k == samples ? t_end : T(t_end * from_int64<T>(k) / from_int64<T>(samples));
       while (!flow.advance_toward(target, 256)) budget.check(0);
       if (mon) {
         arr<T, n> qq, vv;

@@ -136,14 +136,14 @@ std::vector<method<T, P::n>> methods_50(bool compensated) {
 }
 
 /// libqd's dd_real at 50 digits' regime (1e-30 at T = 100): LPF's fixed-point form and the
-/// explicit Odeint peers. Odeint's bulirsch_stoer, the Taylor-series flow, the compositions
-/// (refined by Eigen's ColPivHouseholderQR) and the Newton forms are left out: they construct
-/// their scalar from 64-bit integers, which dd_real cannot (its constructors from int and double
-/// are both candidates).
+/// peers: Odeint's explicit steppers, the compositions and the Taylor-series flow. Odeint's
+/// bulirsch_stoer is left out: it constructs its scalar from a size_t, which dd_real cannot (its
+/// constructors from int and double are both candidates).
 template <class P, class T>
 std::vector<method<T, P::n>> methods_double_double(bool compensated) {
   using namespace geomint;
   using rkn_m4 = odeint::symplectic_rkn_sb3a_m4_mclachlan<arr<T, P::n>, arr<T, P::n>, T>;
+  using C = analysis::symmetric_composition<T>;
   const double scale = P::n > 8 ? 0.05 : 1;
   auto steps = [scale](long base) { return std::max(1L, std::lround(double(base) * scale)); };
   std::vector<method<T, P::n>> all;
@@ -152,6 +152,10 @@ std::vector<method<T, P::n>> methods_double_double(bool compensated) {
   all.push_back(geomint_method<P, lpf_fixed_point<16>, T>("lpf-fixed-point-m16", steps(100), compensated));
   all.push_back(odeint_rkn<P, rkn_m4, T>("odeint-symplectic_rkn_sb3a_m4_mclachlan", steps(10000)));
   all.push_back(odeint_rkf78<P, T>("odeint-runge_kutta_fehlberg78", 48));
+  all.push_back(composition_method<P, T>("sv-yoshida6-s7", C::yoshida6(), steps(4000)));
+  all.push_back(composition_method<P, T>("sv-kahan-li8-s17", C::kahan_li8(), steps(1000)));
+  all.push_back(composition_method<P, T>("sv-sofroniou-spaletta10-s35", C::sofroniou_spaletta10(), steps(400)));
+  all.push_back(taylor_method<P, T>("taylor-series"));
   return all;
 }
 

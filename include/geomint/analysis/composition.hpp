@@ -168,15 +168,26 @@ class symmetric_composition {
   }
 
  private:
+  template <class>
+  friend class symmetric_composition;
+
   symmetric_composition(std::string name, int order, int stages, std::vector<const char*> start)
       : name_(std::move(name)), order_(order) {
-    const int half = (stages + 1) / 2;
-    if (static_cast<int>(start.size()) != half || half > max_unknowns)
-      throw std::logic_error("geomint::symmetric_composition: wrong number of start values");
-    std::vector<T> x(static_cast<std::size_t>(half));
-    for (int i = 0; i < half; ++i) x[static_cast<std::size_t>(i)] = from_decimal<T>(start[static_cast<std::size_t>(i)]);
-    refine(x, stages);
-    gamma_ = expand(x, stages);
+    if constexpr (double_expansion<T>::value) {
+      // A sum of doubles (libqd's types) cannot be constructed from an Eigen::Index, as Eigen's
+      // decompositions do: refined in 100 digits and rounded term by term to T.
+      const symmetric_composition<boost::multiprecision::cpp_bin_float_100> wide(name_, order, stages, start);
+      for (const auto& g : wide.gamma_) gamma_.push_back(narrow<T>(g));
+      iterations_ = wide.iterations_;
+    } else {
+      const int half = (stages + 1) / 2;
+      if (static_cast<int>(start.size()) != half || half > max_unknowns)
+        throw std::logic_error("geomint::symmetric_composition: wrong number of start values");
+      std::vector<T> x(static_cast<std::size_t>(half));
+      for (int i = 0; i < half; ++i) x[static_cast<std::size_t>(i)] = from_decimal<T>(start[static_cast<std::size_t>(i)]);
+      refine(x, stages);
+      gamma_ = expand(x, stages);
+    }
   }
 
   template <class S>

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -57,8 +58,8 @@ T inverse_cube_coefficient(const std::vector<T>& u, const std::vector<T>& w, std
     return T(1) / (u[0] * sqrt(u[0]));
   }
   T sum(0);
-  for (std::size_t j = 1; j <= k; ++j) sum -= T(static_cast<long>(j + 2 * k)) * u[j] * w[k - j];
-  return sum / (T(2) * T(static_cast<long>(k)) * u[0]);
+  for (std::size_t j = 1; j <= k; ++j) sum -= from_int64<T>(static_cast<std::int64_t>(j + 2 * k)) * u[j] * w[k - j];
+  return sum / (T(2) * from_int64<T>(static_cast<std::int64_t>(k)) * u[0]);
 }
 
 /// The order-k coefficient of the outer solar system's accelerations, from the position
@@ -133,11 +134,11 @@ void taylor_coefficients(const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0,
       } else {
         T ss(0), cc(0);
         for (std::size_t j = 1; j <= k; ++j) {
-          ss += T(static_cast<long>(j)) * q[j][0] * c[k - j];
-          cc += T(static_cast<long>(j)) * q[j][0] * s[k - j];
+          ss += from_int64<T>(static_cast<std::int64_t>(j)) * q[j][0] * c[k - j];
+          cc += from_int64<T>(static_cast<std::int64_t>(j)) * q[j][0] * s[k - j];
         }
-        s[k] = ss / T(static_cast<long>(k));
-        c[k] = -cc / T(static_cast<long>(k));
+        s[k] = ss / from_int64<T>(static_cast<std::int64_t>(k));
+        c[k] = -cc / from_int64<T>(static_cast<std::int64_t>(k));
       }
       a[0] = -s[k];
     } else {
@@ -157,7 +158,7 @@ void taylor_coefficients(const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0,
         a[1] = -cauchy(w, vx, k);
       }
     }
-    const T next = T(static_cast<long>(k + 1));
+    const T next = from_int64<T>(static_cast<std::int64_t>(k + 1));
     v[k + 1] = a / next;
     q[k + 1] = v[k] / next;
   }
@@ -203,15 +204,16 @@ class reference_flow {
     check_end(t_end);
     if (t_ < t_end) {
       const T estimate = estimated_steps(t_end);
-      if (estimate > T(max_steps))
-        throw std::length_error("geomint::reference_flow: t_end - t = " + short_number(static_cast<double>(T(t_end - t_))) +
-                                " needs about " + short_number(static_cast<double>(estimate)) +
+      if (estimate > from_int64<T>(max_steps))
+        throw std::length_error("geomint::reference_flow: t_end - t = " +
+                                short_number(geomint::detail::approximately(T(t_end - t_))) + " needs about " +
+                                short_number(geomint::detail::approximately(estimate)) +
                                 " Taylor steps, more than the bound " + std::to_string(max_steps));
     }
     if (!advance_toward(t_end, max_steps))
       throw std::runtime_error("geomint::reference_flow: " + std::to_string(max_steps) + " Taylor steps end at t = " +
-                               short_number(static_cast<double>(t_)) + ", before t_end = " +
-                               short_number(static_cast<double>(t_end)));
+                               short_number(geomint::detail::approximately(t_)) + ", before t_end = " +
+                               short_number(geomint::detail::approximately(t_end)));
   }
 
   /// (t_end - time()) / h for the step size h at the current state: the number of steps to
@@ -231,8 +233,9 @@ class reference_flow {
       const bool last = !(t_ + h < t_end);
       if (last) h = t_end - t_;
       else if (!(t_ + h > t_))
-        throw std::runtime_error("geomint::reference_flow: the step " + geomint::detail::short_number(static_cast<double>(h)) +
-                                 " no longer advances t = " + geomint::detail::short_number(static_cast<double>(t_)) +
+        throw std::runtime_error("geomint::reference_flow: the step " +
+                                 geomint::detail::short_number(geomint::detail::approximately(h)) + " no longer advances t = " +
+                                 geomint::detail::short_number(geomint::detail::approximately(t_)) +
                                  " (t + h == t): t_end is beyond the resolution of the scalar");
       V qn = qc_[order_], vn = vc_[order_];
       for (std::size_t j = order_; j-- > 0;) {
@@ -262,7 +265,7 @@ class reference_flow {
     T h = std::numeric_limits<T>::infinity();
     for (std::size_t j : {order_ - 1, order_}) {
       const T size = std::max(qc_[j].template lpNorm<Eigen::Infinity>(), vc_[j].template lpNorm<Eigen::Infinity>());
-      if (size > T(0)) h = std::min(h, pow(eps / size, T(1) / T(static_cast<long>(j))));
+      if (size > T(0)) h = std::min(h, pow(eps / size, T(1) / from_int64<T>(static_cast<std::int64_t>(j))));
     }
     return h / T(2);
   }

@@ -10,6 +10,7 @@
 
 #include "geomint/core/nodes.hpp"
 #include "geomint/core/polynomial.hpp"
+#include "geomint/core/scalar_traits.hpp"
 
 namespace geomint {
 
@@ -149,7 +150,7 @@ constexpr basis_polynomials<T, M> bernstein_basis() {
     polynomial<T, M> b;
     for (int j = 0; j <= M - a; ++j) {
       const std::int64_t sign = (j % 2 == 0) ? 1 : -1;
-      b[a + j] = T(binomial(M, a) * binomial(M - a, j) * sign);
+      b[a + j] = from_int64<T>(binomial(M, a) * binomial(M - a, j) * sign);
     }
     basis[static_cast<std::size_t>(a)] = b;
   }
@@ -172,7 +173,7 @@ namespace core::detail {
 template <class T>
 constexpr T bernstein_value(int a, int n, const T& t) {
   if (a < 0 || a > n) return T(0);
-  T value(binomial(n, a));
+  T value = from_int64<T>(binomial(n, a));
   const T one_minus_t = T(1) - t;
   for (int i = 0; i < a; ++i) value *= t;
   for (int i = 0; i < n - a; ++i) value *= one_minus_t;
@@ -192,7 +193,7 @@ constexpr std::array<T, M + 1> bernstein_derivatives(const T& t) {
     for (int j = 0; j <= M; ++j) {
       T sum(0);
       for (int i = 0; i <= K; ++i) {
-        const T term = T(binomial(K, i)) * bernstein_value<T>(j - i, M - K, t);
+        const T term = from_int64<T>(binomial(K, i)) * bernstein_value<T>(j - i, M - K, t);
         if ((K - i) % 2 == 0)
           sum += term;
         else

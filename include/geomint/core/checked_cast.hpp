@@ -17,9 +17,18 @@
 #include <string>
 #include <type_traits>
 
+#include "geomint/core/scalar_traits.hpp"
+
 namespace geomint {
 
 namespace detail {
+/// x as a double, for messages: a sum of doubles (core/scalar_traits.hpp) by its leading term.
+template <class Real>
+double approximately(const Real& x) {
+  if constexpr (double_expansion<Real>::value) return double_expansion<Real>::term(x, 0);
+  else return static_cast<double>(x);
+}
+
 /// x with 6 significant digits (1e+300, not 301 digits), for messages.
 inline std::string short_number(double x) {
   std::ostringstream out;
@@ -39,14 +48,23 @@ std::optional<Int> checked_integer(const Real& x) {
   const Real bound = ldexp(Real(1), std::numeric_limits<Int>::digits);  // 2^digits: one past the maximum
   const Real low = std::is_signed_v<Int> ? Real(-bound) : Real(0);
   if (!(t >= low && t < bound)) return std::nullopt;  // also NaN and infinity
-  return static_cast<Int>(t);
+  if constexpr (double_expansion<Real>::value) {
+    // The terms of an integer are integers; their sum fits Int, one term alone may not
+    // (2^63 - 1 = 2^63 + (-1)), so they are added in 128 bits.
+    __extension__ using wide = __int128;
+    wide sum = 0;
+    for (int k = 0; k < double_expansion<Real>::terms; ++k) sum += static_cast<wide>(double_expansion<Real>::term(t, k));
+    return static_cast<Int>(sum);
+  } else {
+    return static_cast<Int>(t);
+  }
 }
 
 /// trunc(x) as Int; throws std::out_of_range naming `what` when it does not fit.
 template <class Int, class Real>
 Int integer_or_throw(const Real& x, const char* what) {
   if (const auto v = checked_integer<Int>(x)) return *v;
-  throw std::out_of_range(std::string(what) + ": " + detail::short_number(static_cast<double>(x)) +
+  throw std::out_of_range(std::string(what) + ": " + detail::short_number(detail::approximately(x)) +
                           " is not finite or outside the range of the integer type");
 }
 

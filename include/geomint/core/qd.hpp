@@ -72,7 +72,7 @@ struct qd_num_traits : Eigen::GenericNumTraits<T> {
 
 /// What libqd lacks of <cmath> and geomint calls (found by argument-dependent lookup, as libqd's
 /// own functions are): frexp, with the mantissa in [1/2, 1) also where the leading double is a
-/// power of two and the rest negative, and round, half away from zero.
+/// power of two and the rest negative; round, half away from zero; trunc, libqd's aint.
 namespace geomint::core::detail {
 template <class T>
 T qd_frexp(const T& a, int* e) {
@@ -98,6 +98,8 @@ inline dd_real frexp(const dd_real& a, int* e) { return geomint::core::detail::q
 inline qd_real frexp(const qd_real& a, int* e) { return geomint::core::detail::qd_frexp(a, e); }
 inline dd_real round(const dd_real& a) { return geomint::core::detail::qd_round(a); }
 inline qd_real round(const qd_real& a) { return geomint::core::detail::qd_round(a); }
+inline dd_real trunc(const dd_real& a) { return aint(a); }
+inline qd_real trunc(const qd_real& a) { return aint(a); }
 
 namespace Eigen {
 template <>

@@ -50,6 +50,24 @@ R widen(const T& x) {
   }
 }
 
+/// x of a wider type H (a Boost.Multiprecision number, an exact rational) in T: a sum of doubles
+/// term by term, each term the nearest double to what the terms before it left (within half a
+/// unit of the sum's last bit), other types by T's conversion.
+template <class T, class H>
+T narrow(const H& x) {
+  if constexpr (double_expansion<T>::value) {
+    double terms[double_expansion<T>::terms];
+    H rest = x;
+    for (double& t : terms) {
+      t = static_cast<double>(rest);
+      rest -= H(t);
+    }
+    return double_expansion<T>::make(terms);
+  } else {
+    return T(x);
+  }
+}
+
 /// T from a 64-bit integer, exactly: T's own constructor where it has one; otherwise (libqd's
 /// types construct from int and double only) from its upper and lower 32 bits, each exact in a
 /// double, and an exact product by 2^32.

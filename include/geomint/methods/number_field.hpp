@@ -40,13 +40,7 @@ T rational_to(const exact_rational& x) {
   if constexpr (std::is_floating_point_v<T>) {
     return x.template convert_to<T>();
   } else if constexpr (double_expansion<T>::value) {
-    double terms[double_expansion<T>::terms];
-    exact_rational rest = x;
-    for (double& t : terms) {
-      t = rest.template convert_to<double>();
-      rest -= exact_rational(t);
-    }
-    return double_expansion<T>::make(terms);
+    return narrow<T>(x);
   } else {
     return T(x);
   }
