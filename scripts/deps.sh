@@ -12,4 +12,4 @@ geomint_install_deps() {
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
-GEOMINT_BUILD_PACKAGES=(cmake make g++ clang libeigen3-dev libboost-dev catch2 libmpfr-dev libgmp-dev libqd-dev doxygen)
+GEOMINT_BUILD_PACKAGES=(cmake make g++ clang libeigen3-dev libboost-dev catch2 libmpfr-dev libgmp-dev libqd-dev libsleef-dev doxygen)

@@ -3,6 +3,7 @@
 
 usage: /usr/bin/python3 tools/workprecision_costs.py CSV...
        /usr/bin/python3 tools/workprecision_costs.py --compare BEFORE.csv AFTER.csv
+       /usr/bin/python3 tools/workprecision_costs.py --variants SUFFIX CSV...
 For every method: the CPU time per step (median over its runs of cpu_seconds / steps) in each
 file, and the force evaluations per step where the method fixes them (compositions: one per
 stage). Columns follow the files in the order given (their summary line names them).
@@ -10,6 +11,9 @@ stage). Columns follow the files in the order given (their summary line names th
 the median over the runs with the same number of steps in both files of after / before CPU
 time, and how many such runs there are: ladders that end at different lengths do not move it,
 which they do to the medians of the first form (the cost per step depends on tau).
+--variants SUFFIX CSV...: within each file, every method M with a variant M SUFFIX (e.g.
+lpf-fixed-point-m10 and lpf-fixed-point-m10-scalar-forces), the median over their runs with the
+same number of steps of CPU(M) / CPU(M SUFFIX), and how many runs.
 """
 import csv
 import re
@@ -53,6 +57,21 @@ def compare(before_path, after_path):
         print(f"| {m} | {statistics.median(r):.2f} | {len(r)} |")
 
 
+def variants(suffix, paths):
+    print(f"| problem | method | CPU time / CPU time of the variant {suffix} (median) | runs compared |")
+    print("|---|---|---|---|")
+    for path in paths:
+        label = read(path)[0]
+        r = runs(path)
+        ratios = {}
+        for (m, steps), t in r.items():
+            other = r.get((m + suffix, steps))
+            if other:
+                ratios.setdefault(m, []).append(t / other)
+        for m, q in ratios.items():
+            print(f"| {label} | {m} | {statistics.median(q):.2f} | {len(q)} |")
+
+
 def fmt(seconds):
     if seconds is None:
         return "-"
@@ -66,6 +85,12 @@ def main(argv):
             print(__doc__, file=sys.stderr)
             sys.exit(2)
         compare(argv[2], argv[3])
+        return
+    if len(argv) >= 2 and argv[1] == "--variants":
+        if len(argv) < 4:
+            print(__doc__, file=sys.stderr)
+            sys.exit(2)
+        variants(argv[2], argv[3:])
         return
     if len(argv) < 2:
         sys.exit(__doc__)

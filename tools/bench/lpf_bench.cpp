@@ -15,8 +15,14 @@
 //   integrator constructed, then the steps from the initial data, compensated summation on.
 //   Counters: sweeps (iterations) per step and the run's CPU time per step; `construct` alone: the
 //   integrator's construction (the scheme's coefficients), which the run includes.
+//
+//   stage-forces/<system>/<scheme>/<steps>/packs|one-by-one: the same whole run in double with the
+//   fixed-point sweeps' stage forces on SIMD packs (core/simd.hpp) or one by one
+//   (newton_options::simd_forces), for the systems that opt in and for Kepler on packs, which the
+//   library's Kepler does not opt in to: the measurement behind that choice.
 // Filter with --benchmark_filter, e.g. --benchmark_filter='double/lpf-m[468]-gauss'.
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include <benchmark/benchmark.h>
@@ -25,8 +31,23 @@
 #include "geomint/integrator.hpp"
 #include "geomint/schemes/lpf_fixed_point.hpp"
 #include "geomint/mechanics/systems.hpp"
+#include "geomint/mechanics/zoo.hpp"
 
 namespace {
+
+/// systems::kepler with its forces on SIMD packs.
+struct kepler_on_packs : geomint::natural<kepler_on_packs, 2> {
+  static constexpr std::string_view name = "kepler-on-packs";
+  static constexpr bool stage_parallel_forces = true;
+  template <class T>
+  static void initial_data(geomint::vec<T, 2>& q, geomint::vec<T, 2>& qdot) { geomint::systems::kepler::initial_data(q, qdot); }
+  template <class S>
+  static S potential(const geomint::vec<S, 2>& q) { return geomint::systems::kepler::potential<S>(q); }
+  template <class S>
+  static geomint::vec<S, 2> potential_gradient(const geomint::vec<S, 2>& q) { return geomint::systems::kepler::potential_gradient<S>(q); }
+  template <class T>
+  static geomint::mat<T, 2> mass_matrix() { return geomint::mat<T, 2>::Identity(); }
+};
 
 using mp50 = boost::multiprecision::cpp_bin_float_50;
 
@@ -65,13 +86,14 @@ void BM_step(benchmark::State& state) {
 
 /// A whole run as geomint-workprecision's geomint_method times it (tools/workprecision/methods.hpp).
 template <class Scheme, class Sys, class T>
-void BM_run(benchmark::State& state, long steps, long t_end, bool stop_on_rate) {
+void BM_run(benchmark::State& state, long steps, long t_end, bool stop_on_rate, bool simd_forces) {
   const auto [q0, v0] = initial<Sys, T>();
   long iterations = 0, taken = 0;
   for (auto _ : state) {
     geomint::integrator<Scheme, Sys, T> I(Sys{}, T(T(t_end) / T(steps)));
     I.set_compensated_summation(true);
     if (stop_on_rate) I.options().stop_on_rate = true;
+    I.options().simd_forces = simd_forces;
     auto s = I.initial_state(q0, v0);
     for (long k = 0; k < steps; ++k) {
       const geomint::step_status st = I.try_step(s);
@@ -102,9 +124,18 @@ void BM_construct(benchmark::State& state) {
 template <class Scheme, class Sys, class T>
 void add_run(const std::string& scalar, const std::string& scheme, long steps, long t_end, bool stop_on_rate) {
   const std::string name = "workprecision/" + std::string(Sys::name) + "/" + scalar + "/" + scheme + "/";
-  benchmark::RegisterBenchmark((name + std::to_string(steps)).c_str(), &BM_run<Scheme, Sys, T>, steps, t_end, stop_on_rate)
+  benchmark::RegisterBenchmark((name + std::to_string(steps)).c_str(), &BM_run<Scheme, Sys, T>, steps, t_end, stop_on_rate, true)
       ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark((name + "construct").c_str(), &BM_construct<Scheme, Sys, T>)->Unit(benchmark::kMicrosecond);
+}
+
+template <class Scheme, class Sys>
+void add_stage_forces(const std::string& scheme, long steps, long t_end) {
+  const std::string name = "stage-forces/" + std::string(Sys::name) + "/" + scheme + "/" + std::to_string(steps) + "/";
+  for (const bool packs : {true, false})
+    benchmark::RegisterBenchmark((name + (packs ? "packs" : "one-by-one")).c_str(), &BM_run<Scheme, Sys, double>, steps, t_end,
+                                 false, packs)
+        ->Unit(benchmark::kMicrosecond);
 }
 
 template <class Scheme, class Sys, class T>
@@ -145,6 +176,10 @@ int main(int argc, char** argv) {
   using geomint::lpf_fixed_point;
   add_run<lpf_fixed_point<10>, geomint::systems::pendulum, double>("double", "lpf-fixed-point-m10-stop-on-rate", 715, 1000, true);
   add_run<lpf_fixed_point<16>, geomint::systems::pendulum, mp50>("cpp_bin_float_50", "lpf-fixed-point-m16", 142, 100, false);
+  // The runs near 1e-10 of geomint-workprecision's ladders (T = 1000; the outer solar system 10^5 days).
+  add_stage_forces<lpf_fixed_point<10>, geomint::systems::pendulum>("lpf-fixed-point-m10", 715, 1000);
+  add_stage_forces<lpf_fixed_point<12>, kepler_on_packs>("lpf-fixed-point-m12", 2402, 1000);
+  add_stage_forces<lpf_fixed_point<10>, geomint::zoo::outer_solar>("lpf-fixed-point-m10", 1000, 100000);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -94,17 +94,20 @@ T tolerance_of(long knob) {
 /// A geomint scheme; `compensated`: compensated summation of the q, p update
 /// (integrator::set_compensated_summation); `stop_on_rate`: newton_options::stop_on_rate on
 /// (the default of multiprecision scalars) also in double, where by default the iteration goes
-/// on until its correction stops changing (for the round-off behaviour of long runs).
+/// on until its correction stops changing (for the round-off behaviour of long runs);
+/// `simd_forces`: newton_options::simd_forces (the stage forces on SIMD packs, the default).
 template <class P, class Scheme, class T>
-method<T, P::n> geomint_method(std::string name, long first_steps, bool compensated, bool stop_on_rate = false) {
+method<T, P::n> geomint_method(std::string name, long first_steps, bool compensated, bool stop_on_rate = false,
+                               bool simd_forces = true) {
   constexpr int n = P::n;
   method<T, n> m{std::move(name), false, knob_kind::steps, first_steps, {}};
-  m.run = [compensated, stop_on_rate](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& v,
-                                      const monitor_fn<T, n>* mon) -> long {
+  m.run = [compensated, stop_on_rate, simd_forces](long steps, const T& t_end, arr<T, n>& q, arr<T, n>& v,
+                                                   const monitor_fn<T, n>* mon) -> long {
     using I = integrator<Scheme, typename P::sys, T>;
     I integ(typename P::sys{}, T(t_end / from_int64<T>(steps)));
     integ.set_compensated_summation(compensated);
     if (stop_on_rate) integ.options().stop_on_rate = true;
+    integ.options().simd_forces = simd_forces;
     // The shared state is (q, v); the scheme's is (q, p = M v).
     const arr<T, n> mass = masses<typename P::sys, T>();
     typename I::state s;

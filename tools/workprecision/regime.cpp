@@ -80,6 +80,9 @@ std::vector<method<T, P::n>> methods_large(bool compensated) {
     all.push_back(geomint_method<P, lpf_fixed_point<10>, T>("lpf-fixed-point-m10", 60, compensated));
     all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12", 50, compensated));
     all.push_back(geomint_method<P, lpf_fixed_point<16>, T>("lpf-fixed-point-m16", 40, compensated));
+    // The stage forces one by one (newton_options::simd_forces off), to measure the packs.
+    all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8-scalar-forces", 80, compensated, false, false));
+    all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12-scalar-forces", 50, compensated, false, false));
   } else {
     all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8", 20, compensated));
     all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12", 10, compensated));
@@ -112,6 +115,10 @@ std::vector<method<T, P::n>> methods_16(bool compensated) {
   all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8-stop-on-rate", 500, compensated, true));
   all.push_back(geomint_method<P, lpf_fixed_point<10>, T>("lpf-fixed-point-m10-stop-on-rate", 300, compensated, true));
   all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12-stop-on-rate", 300, compensated, true));
+  // The stage forces one by one (newton_options::simd_forces off), to measure the packs.
+  all.push_back(geomint_method<P, lpf_fixed_point<8>, T>("lpf-fixed-point-m8-scalar-forces", 500, compensated, false, false));
+  all.push_back(geomint_method<P, lpf_fixed_point<10>, T>("lpf-fixed-point-m10-scalar-forces", 300, compensated, false, false));
+  all.push_back(geomint_method<P, lpf_fixed_point<12>, T>("lpf-fixed-point-m12-scalar-forces", 300, compensated, false, false));
   add_peers<P, T, false>(all);
   return all;
 }

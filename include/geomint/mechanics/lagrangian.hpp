@@ -29,6 +29,7 @@
 
 #include <Eigen/Core>
 #include "geomint/ad/dual.hpp"
+#include "geomint/core/simd.hpp"
 #include "geomint/linalg/lu_small.hpp"
 #include "geomint/linalg/types.hpp"
 
@@ -170,6 +171,13 @@ concept lagrangian_system = mechanics::detail::has_dof<Sys> && (Sys::dof >= 1) &
 template <class Sys>
 concept natural_system = lagrangian_system<Sys> && std::is_base_of_v<natural_tag, Sys> &&
                          mechanics::detail::static_potential<Sys, double> && mechanics::detail::uses_natural_operator<Sys>;
+
+/// A natural system whose potential_gradient may be instantiated on SIMD packs (core/simd.hpp):
+/// it declares `static constexpr bool stage_parallel_forces = true;`.
+template <class Sys>
+concept stage_parallel_system = natural_system<Sys> && requires {
+  requires Sys::stage_parallel_forces;
+} && mechanics::detail::supplies_potential_gradient<Sys, double_pack<simd_width>>;
 
 /// Hides the natural-system structure of Sys: derivatives then come from AD on L itself.
 template <lagrangian_system Sys>

@@ -44,6 +44,8 @@ struct pendulum : natural<pendulum, 1> {
   static vec<S, 1> potential_gradient(const vec<S, 1>& q) {
     return vec<S, 1>(sine(q[0]));
   }
+  /// The gradient on SIMD packs of stages (core/simd.hpp): a sine per stage is most of a step.
+  static constexpr bool stage_parallel_forces = true;
   template <class T>
   static mat<T, 1> mass_matrix() { return mat<T, 1>::Identity(); }
 };
@@ -64,7 +66,10 @@ struct kepler : natural<kepler, 2> {
     using std::sqrt;
     return S(-1) / sqrt(q[0] * q[0] + q[1] * q[1]);
   }
-  /// grad V = q / |q|^3, with 1/|q| from inverse_sqrt (fast in multiprecision).
+  /// grad V = q / |q|^3, with 1/|q| from inverse_sqrt (fast in multiprecision). It compiles on
+  /// SIMD packs (core/simd.hpp), but the engine does not take it there: one square root and
+  /// one division cost less than laying the stages out in packs (lpf_fixed_point<12>: 2-4%
+  /// slower on packs of 2 and 4, docs/results/performance.md, "Stage forces on SIMD packs").
   template <class S>
   static vec<S, 2> potential_gradient(const vec<S, 2>& q) {
     const S r2 = q[0] * q[0] + q[1] * q[1];

@@ -34,6 +34,10 @@ template <class T, int N>
 struct base_scalar<geomint::dual<T, N>> {
   using type = typename base_scalar<T>::type;
 };
+template <int W>
+struct base_scalar<geomint::double_pack<W>> {
+  using type = double;
+};
 
 /// A decimal constant in the precision of S (a scalar or a nested dual over it).
 template <class S>
@@ -230,6 +234,8 @@ struct outer_solar : natural<outer_solar, 18> {
       }
     return g;
   }
+  /// The gradient on SIMD packs of stages (core/simd.hpp): 15 pairs, a square root and a division each.
+  static constexpr bool stage_parallel_forces = true;
   template <class S>
   static mat<S, 18> mass_matrix() {
     mat<S, 18> M = mat<S, 18>::Zero();

@@ -285,6 +285,48 @@ class gauss_fixed_point_engine {
   /// f(x) = -grad V(x): the system's potential_gradient if it supplies one, else AD on V.
   V force(const V& x) const { return lagrangian_derivatives<Sys, T>::lagrangian_q(sys_, x, V::Zero()); }
 
+  /// next[I n + r] = tau b_I f_r(Q_I) at the stage points of the combinations z: on SIMD packs
+  /// where the system opts in (double, newton_options::simd_forces), else one by one.
+  void sweep_forces(const V& q, const T& tau, const stage_terms& terms, const T* z, T* next, bool simd) const {
+    auto point = [&](std::size_t I) {
+      return stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(V::Map(&z[I * n]))), terms.exact_offsets);
+    };
+    if constexpr (std::is_same_v<T, double> && stage_parallel_system<Sys>) {
+      if (simd) {
+        std::array<V, S> Q;
+        for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) Q[I] = point(I);
+        forces_in_packs(Q, terms.hb, next);
+        return;
+      }
+    }
+    for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
+      const V g = force(point(I));
+      for (int r = 0; r < n; ++r) next[I * n + r] = terms.hb[I] * g[r];
+    }
+  }
+
+  /// next[I n + r] = hb_I f_r(Q_I) for every stage, simd_width stages per call of the system's
+  /// potential_gradient on packs (core/simd.hpp): the S evaluations of a Jacobi sweep are
+  /// independent. The stage points are laid out component by component (lanes past the last
+  /// stage repeat it, a point the force is defined at), so that each pack is one load and each
+  /// result one store. f = -grad V, as force().
+  static void forces_in_packs(const std::array<V, S>& Q, const std::array<T, S>& hb, T* next) {
+    constexpr int W = simd_width;
+    constexpr int L = (S + W - 1) / W * W;
+    using P = double_pack<W>;
+    std::array<double, static_cast<std::size_t>(n * L)> points, forces;
+    for (int I = 0; I < L; ++I)
+      for (int r = 0; r < n; ++r) points[static_cast<std::size_t>(r * L + I)] = Q[static_cast<std::size_t>(I < S ? I : S - 1)][r];
+    for (int I0 = 0; I0 < L; I0 += W) {
+      vec<P, n> x;
+      for (int r = 0; r < n; ++r) x[r] = P::load(&points[static_cast<std::size_t>(r * L + I0)]);
+      const vec<P, n> g = Sys::template potential_gradient<P>(x);
+      for (int r = 0; r < n; ++r) g[r].store(&forces[static_cast<std::size_t>(r * L + I0)]);
+    }
+    for (int I = 0; I < S; ++I)
+      for (int r = 0; r < n; ++r) next[I * n + r] = hb[static_cast<std::size_t>(I)] * -forces[static_cast<std::size_t>(r * L + I)];
+  }
+
   /// Built-in floating types: Jacobi sweeps F <- tau b_i f(Q_i(F)), whose S force evaluations
   /// are independent and overlap in the processor's pipeline (Gauss-Seidel's chain of dependent
   /// evaluations was slower per step in double despite the fewer sweeps). Each sweep forms all
@@ -301,10 +343,7 @@ class gauss_fixed_point_engine {
       st.iterations = it;
       std::array<T, S * n> z, next;
       jacobi_combination(f, z.data());
-      for (std::size_t I = 0; I < static_cast<std::size_t>(S); ++I) {
-        const V g = force(stage_point(q, terms.offset[I], tau, V(terms.cv[I] + inverse_mass(V::Map(&z[I * n]))), terms.exact_offsets));
-        for (int r = 0; r < n; ++r) next[I * n + r] = terms.hb[I] * g[r];
-      }
+      sweep_forces(q, tau, terms, z.data(), next.data(), opt.simd_forces);
       T change(0), size(0);
       bool finite = true;
       for (std::size_t k = 0; k < static_cast<std::size_t>(S * n); ++k) {

@@ -51,6 +51,12 @@ struct newton_options {
   /// solves its stage equations in double first and iterates in T from there. No effect in
   /// built-in types.
   bool double_jacobian = !std::is_floating_point_v<T>;
+  /// In double, for a natural system that declares `stage_parallel_forces` (core/simd.hpp): the
+  /// fixed-point sweeps (lpf_fixed_point, lpf on Gauss-interior nodes) evaluate their S stage
+  /// forces simd_width at a time on SIMD packs instead of one by one. The values differ only by
+  /// the elementary functions' last bit (SLEEF's 1-ulp sin against the C library's). No effect
+  /// elsewhere.
+  bool simd_forces = true;
 
   void validate() const {
     if (max_iterations < 1 || max_iterations > 100000)

@@ -11,6 +11,7 @@
 ///   --digits 50: T = 100 in real128 (quadruple, 113 bits) and MPFR reals of 113 and 166 bits.
 /// Built only with -DGEOMINT_PEER_HEYOKA=ON and an installed heyoka (tools/bench/peers).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -75,16 +76,45 @@ struct scalar_io<mppp::real> {
 };
 
 /// The equations of motion of geomint-workprecision's problems (problems.hpp): the pendulum
-/// qddot = -sin q, Kepler qddot = -q / |q|^3, with state (q, qdot).
-std::vector<std::pair<hy::expression, hy::expression>> equations(const std::string& system) {
+/// qddot = -sin q, Kepler qddot = -q / |q|^3, and the outer solar system (zoo::outer_solar)
+/// qddot_i = sum_j G m_j (q_j - q_i) / |q_j - q_i|^3, with state (q, qdot). Its constants G m_j
+/// are formed in R from zoo's decimal strings and converted to T (no double literal in real128
+/// or MPFR).
+template <class T, class R>
+std::vector<std::pair<hy::expression, hy::expression>> equations(const std::string& system, long prec) {
   if (system == "pendulum") {
     auto [x, v] = hy::make_vars("x", "v");
     return {hy::prime(x) = v, hy::prime(v) = -hy::sin(x)};
   }
-  auto [x, y, vx, vy] = hy::make_vars("x", "y", "vx", "vy");
-  const auto r2 = x * x + y * y;
-  return {hy::prime(x) = vx, hy::prime(y) = vy, hy::prime(vx) = -x * hy::pow(r2, -1.5),
-          hy::prime(vy) = -y * hy::pow(r2, -1.5)};
+  if (system == "kepler") {
+    auto [x, y, vx, vy] = hy::make_vars("x", "y", "vx", "vy");
+    const auto r2 = x * x + y * y;
+    return {hy::prime(x) = vx, hy::prime(y) = vy, hy::prime(vx) = -x * hy::pow(r2, -1.5),
+            hy::prime(vy) = -y * hy::pow(r2, -1.5)};
+  }
+  using sys = geomint::zoo::outer_solar;
+  constexpr int bodies = 6, n = 3 * bodies;
+  std::vector<hy::expression> q, v;
+  for (int i = 0; i < n; ++i) q.emplace_back(hy::variable("q" + std::to_string(i)));
+  for (int i = 0; i < n; ++i) v.emplace_back(hy::variable("v" + std::to_string(i)));
+  std::vector<hy::expression> acc(n, hy::expression(scalar_io<T>::template from<R>(R(0), prec)));
+  for (int i = 0; i < bodies; ++i)
+    for (int j = i + 1; j < bodies; ++j) {
+      std::array<hy::expression, 3> d;
+      for (int c = 0; c < 3; ++c) d[std::size_t(c)] = q[std::size_t(3 * j + c)] - q[std::size_t(3 * i + c)];
+      const auto inv_r3 = hy::pow(d[0] * d[0] + d[1] * d[1] + d[2] * d[2], -1.5);
+      const auto gm = [&](int k) {
+        return hy::expression(scalar_io<T>::template from<R>(R(sys::gravitational_constant<R>() * sys::mass<R>(k)), prec));
+      };
+      for (int c = 0; c < 3; ++c) {
+        acc[std::size_t(3 * i + c)] += gm(j) * d[std::size_t(c)] * inv_r3;
+        acc[std::size_t(3 * j + c)] -= gm(i) * d[std::size_t(c)] * inv_r3;
+      }
+    }
+  std::vector<std::pair<hy::expression, hy::expression>> out;
+  for (int i = 0; i < n; ++i) out.push_back(hy::prime(q[std::size_t(i)]) = v[std::size_t(i)]);
+  for (int i = 0; i < n; ++i) out.push_back(hy::prime(v[std::size_t(i)]) = acc[std::size_t(i)]);
+  return out;
 }
 
 /// One tolerance of one variant: the compiled integrator and its measurement.
@@ -110,13 +140,13 @@ class ladder {
     using std::pow;
     const T tol = scalar_io<T>::template from<R>(R(pow(R(10), R(-knob) / R(4))), v_.prec);
     if constexpr (std::is_same_v<T, double>)
-      return std::make_unique<hy::taylor_adaptive<T>>(equations(P::name), state0_, hy::kw::tol = tol,
+      return std::make_unique<hy::taylor_adaptive<T>>(equations<T, R>(P::name, v_.prec), state0_, hy::kw::tol = tol,
                                                       hy::kw::compact_mode = v_.compact, hy::kw::fast_math = v_.fast_math);
     else if constexpr (std::is_same_v<T, mppp::real>)
-      return std::make_unique<hy::taylor_adaptive<T>>(equations(P::name), state0_, hy::kw::tol = tol,
+      return std::make_unique<hy::taylor_adaptive<T>>(equations<T, R>(P::name, v_.prec), state0_, hy::kw::tol = tol,
                                                       hy::kw::compact_mode = v_.compact, hy::kw::prec = v_.prec);
     else
-      return std::make_unique<hy::taylor_adaptive<T>>(equations(P::name), state0_, hy::kw::tol = tol,
+      return std::make_unique<hy::taylor_adaptive<T>>(equations<T, R>(P::name, v_.prec), state0_, hy::kw::tol = tol,
                                                       hy::kw::compact_mode = v_.compact);
   }
 
@@ -237,7 +267,7 @@ void run_variant(const options& o, const wp::regime& g, const variant& v, long f
                  std::vector<std::vector<wp::result>>& out) {
   if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), v.name) == o.only.end()) return;
   const double max_seconds = o.max_seconds.value_or(g.digits == 16 ? 1.0 : 4.0);
-  const ladder<P, T, R> l(v, R(long(g.t_end)));
+  const ladder<P, T, R> l(v, R(long(g.t_end * P::horizon)));
   auto pts = sweep<P, T, R>(l, first, g.floor, eps, max_seconds);
   for (int pass = 2; pass <= o.passes; ++pass)
     for (auto& pt : pts) {
@@ -272,7 +302,7 @@ void run(const options& o) {
   const char* scalar = o.digits == 16 ? "double" : "real128 and MPFR real";
   if (o.csv) std::cout << "method,tau,steps,cpu_seconds,final_error,max_energy_error\n";
   else
-    std::cout << "system " << P::name << ", T = " << g.t_end << ", " << scalar << "; heyoka " << HEYOKA_VERSION_STRING
+    std::cout << "system " << P::name << ", T = " << g.t_end * P::horizon << ", " << scalar << "; heyoka " << HEYOKA_VERSION_STRING
               << "; CPU time of propagate_until only (JIT excluded), fastest of " << o.passes << " passes\n"
               << std::left << std::setw(34) << "method" << std::right << std::setw(12) << "tau" << std::setw(10) << "steps"
               << std::setw(12) << "cpu [s]" << std::setw(12) << "final err" << std::setw(12) << "max dE\n";
@@ -287,7 +317,7 @@ void run(const options& o) {
                   << r.max_energy_error << "\n";
     }
   const char* pre = o.csv ? "# " : "";
-  std::cout << pre << "summary (" << P::name << ", " << scalar << ", T = " << g.t_end
+  std::cout << pre << "summary (" << P::name << ", " << scalar << ", T = " << g.t_end * P::horizon
             << "): CPU seconds at final error, log-log interpolation between measured points\n";
   std::vector<double> targets;
   for (const auto& goal : g.goals) targets.push_back(goal.error);
@@ -316,11 +346,12 @@ void run(const options& o) {
 }
 
 const char* usage =
-    "usage: geomint-peer-heyoka [--system pendulum|kepler] [--digits 16|50] [--csv] [--passes N (1..10)]\n"
+    "usage: geomint-peer-heyoka [--system pendulum|kepler|outer-solar] [--digits 16|50] [--csv] [--passes N (1..10)]\n"
     "                           [--max-seconds S (> 0)] [--methods a,b,...]\n"
     "heyoka's taylor_adaptive on geomint-workprecision's problems, references and final-error\n"
     "measure; a ladder of tolerances 10^(-k/4) per variant; CPU time of propagate_until only\n"
     "(the JIT compilation excluded), the fastest of repeated runs and of N passes (default 2).\n"
+    "The outer solar system's T is 100 times the regime's, in days (geomint-workprecision's).\n"
     "--digits 16: double, T = 1000: heyoka-double, heyoka-double-fast-math, heyoka-double-compact,\n"
     "heyoka-double-compact-fast-math.\n"
     "--digits 50: T = 100: heyoka-real128, heyoka-real128-compact (quadruple precision),\n"
@@ -335,7 +366,7 @@ int main(int argc, char** argv) {
   options o;
   geomint::cli::parser cl("geomint-peer-heyoka", usage);
   cl.toggle("--csv", [&] { o.csv = true; })
-      .value("--system", [&](const std::string& v) { o.system = geomint::cli::parse_choice("--system", v, {"pendulum", "kepler"}); })
+      .value("--system", [&](const std::string& v) { o.system = geomint::cli::parse_choice("--system", v, {"pendulum", "kepler", "outer-solar"}); })
       .value("--digits",
              [&](const std::string& v) { o.digits = geomint::cli::parse_choice("--digits", v, {"16", "50"}) == "16" ? 16 : 50; })
       .value("--max-seconds",
@@ -345,6 +376,7 @@ int main(int argc, char** argv) {
   if (const auto done = cl.parse(argc, argv)) return *done;
   try {
     if (o.system == "kepler") run<wp::kepler_problem>(o);
+    else if (o.system == "outer-solar") run<wp::outer_solar_problem>(o);
     else run<wp::pendulum_problem>(o);
     return geomint::cli::finish_stdout("geomint-peer-heyoka", 0);
   } catch (const std::exception& e) {
