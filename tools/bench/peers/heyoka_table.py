@@ -3,7 +3,9 @@
 geomint-workprecision --csv (geomint-<system>-<digits>.csv) and geomint-peer-heyoka --csv
 (heyoka-<system>-<digits>.csv) in DIR, one markdown row per problem, regime and final error:
 geomint's best scheme, heyoka's best variant and its default (heyoka-double in double), and
-the ratio of the two bests. usage: heyoka_table.py DIR"""
+the ratio of the two bests; geomint's 50-digit regime also in dd_real where
+geomint-<system>-50-dd.csv exists (geomint-workprecision --scalar dd_real).
+usage: heyoka_table.py DIR"""
 import os
 import re
 import sys
@@ -47,9 +49,12 @@ def main():
     d = sys.argv[1]
     print("| problem, regime | final error | geomint best | heyoka best | heyoka default | geomint / heyoka best |")
     print("|---|---|---|---|---|---|")
-    for system in ("pendulum", "kepler"):
-        for digits, regime in (("16", "double, T = 1000"), ("50", "T = 100")):
-            g = summary(os.path.join(d, "geomint-%s-%s.csv" % (system, digits)))
+    for system in ("pendulum", "kepler", "outer-solar"):
+        days = system == "outer-solar"
+        for digits, scalar, regime in (("16", "", "double, T = 10^5 days" if days else "double, T = 1000"),
+                                       ("50", "", "cpp_bin_float_50, T = 10^4 days" if days else "cpp_bin_float_50, T = 100"),
+                                       ("50", "-dd", "dd_real, T = 100")):
+            g = summary(os.path.join(d, "geomint-%s-%s%s.csv" % (system, digits, scalar)))
             h = summary(os.path.join(d, "heyoka-%s-%s.csv" % (system, digits)))
             default = "heyoka-double" if digits == "16" else "heyoka-real128"
             for error in sorted(g, key=float, reverse=True):
