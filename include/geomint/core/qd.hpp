@@ -16,6 +16,21 @@
 #include <limits>
 
 #include <Eigen/Core>
+
+/// libqd's exact product a*b = p + e is Dekker's split unless QD_FMS names a fused multiply-
+/// subtract, and the split is only exact if the compiler does not contract it into fmas. GCC 12
+/// with its default -ffp-contract=fast did so for FMA with AVX-512 (-march=native on an AVX-512
+/// host; -mfma alone did not): dd_real products lost their low half, and the Gauss collocation
+/// tableau in dd_real was symplectic only to 1e-16 (tests/core/test_qd_fma.cpp). Where the
+/// target has FMA, the product's error is the exact fma(a, b, -p) instead, which is also
+/// faster; include this header before any libqd header.
+#if defined(__FMA__) && !defined(QD_FMS)
+#if defined(_QD_INLINE_H)
+#error "geomint/core/qd.hpp must be included before libqd's headers on a target with FMA (see the comment above)"
+#endif
+#define QD_FMA(a, b, c) std::fma(a, b, c)
+#define QD_FMS(a, b, c) std::fma(a, b, -(c))
+#endif
 #include <qd/dd_real.h>
 #include <qd/qd_real.h>
 
