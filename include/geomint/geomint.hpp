@@ -46,6 +46,7 @@
 // the integrators: one contract for free and constrained systems
 #include "geomint/integrator.hpp"
 #include "geomint/constrained_integrator.hpp"
+#include "geomint/ensemble.hpp"
 #include "geomint/stepper.hpp"
 // methods as data: exact coefficients, tableaux of every class, their runnable form, the scheme over them
 #include "geomint/methods/algebraic_number.hpp"

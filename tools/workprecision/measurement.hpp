@@ -46,16 +46,6 @@ struct settings {
   bool compensated = true;  ///< geomint's schemes with compensated summation (--plain-summation: off)
 };
 
-struct result {
-  std::string method;
-  long knob = 0;
-  double tau = 0;
-  long steps = 0;
-  double cpu = 0;
-  double final_error = 0;
-  double max_energy_error = 0;
-};
-
 /// |(q, p) - (q, p)_ref| (Euclidean) in the reference scalar R.
 template <class R, class T, int n>
 double phase_error(const arr<T, n>& q, const arr<T, n>& p, const analysis::closed_form_state<R, n>& ref) {
@@ -119,25 +109,6 @@ std::optional<result> measure(const method<T, P::n>& m, long knob, const T& t_en
   if (m.run(knob, t_end, q2, p2, &monitor) < 0) return std::nullopt;
   r.max_energy_error = to_double(worst);
   return r;
-}
-
-/// CPU time at a target final error, interpolated log-log between the two measured points that
-/// bracket it (the first crossing from above); a single run (Taylor) counts if it is below.
-inline std::optional<double> cpu_at(const std::vector<result>& pts, double target) {
-  if (pts.size() == 1) {
-    if (pts[0].final_error <= target) return pts[0].cpu;
-    return std::nullopt;
-  }
-  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-    const result &a = pts[i], &b = pts[i + 1];
-    if (a.final_error >= target && b.final_error <= target && a.final_error > 0 && b.final_error > 0) {
-      if (a.final_error == b.final_error) return std::min(a.cpu, b.cpu);
-      const double s = (std::log(target) - std::log(a.final_error)) / (std::log(b.final_error) - std::log(a.final_error));
-      return std::exp(std::log(a.cpu) + s * (std::log(b.cpu) - std::log(a.cpu)));
-    }
-  }
-  if (!pts.empty() && pts.front().final_error <= target) return pts.front().cpu;  // first run already below
-  return std::nullopt;
 }
 
 template <class P, class T, class R>

@@ -32,6 +32,7 @@
 #include "geomint/analysis/reference_flow.hpp"
 #include "geomint/integrator.hpp"
 #include "geomint/schemes/lpf_fixed_point.hpp"
+#include "points.hpp"
 #include "problems.hpp"
 
 namespace geomint::workprecision {
@@ -42,12 +43,6 @@ template <class T, int n>
 using monitor_fn = std::function<void(const arr<T, n>&, const arr<T, n>&)>;
 
 enum class knob_kind { steps, tolerance, none };
-
-inline double cpu_now() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
-}
 
 /// A run stopped by its CPU-time budget.
 struct run_stopped : std::runtime_error {

@@ -9,7 +9,8 @@
 /// - kepler:   a = -q |q|^-3;
 /// - charged:  a = B(r) (v_y, -v_x) with B = 1 + r^2, the Lorentz force of B = curl A
 ///   (systems.hpp: A = a(r) (-y, x), a = (1 + r^2/2)/2);
-/// - outer solar: a_i = G sum_{j != i} m_j (q_j - q_i) |q_j - q_i|^-3 (Newton's gravitation).
+/// - outer solar: a_i = G sum_{j != i} m_j (q_j - q_i) |q_j - q_i|^-3 (Newton's gravitation);
+/// - henon-heiles: a = -(x + 2 x y, y + x^2 - y^2).
 /// Taylor coefficients follow from the usual recurrences (Cauchy products; sin/cos pairs;
 /// u^alpha: u_0 k w_k = sum_{j=1..k} ((alpha + 1) j - k) u_j w_{k-j}); the order N is about
 /// -ln(eps)/2 and the step h = min_j (eps/|z_j|)^(1/j) / 2 over the last two coefficients
@@ -37,7 +38,7 @@ template <class Sys>
 inline constexpr bool has_reference_flow =
     std::is_same_v<Sys, systems::harmonic> || std::is_same_v<Sys, systems::pendulum> ||
     std::is_same_v<Sys, systems::kepler> || std::is_same_v<Sys, systems::charged> ||
-    std::is_same_v<Sys, zoo::outer_solar>;
+    std::is_same_v<Sys, zoo::outer_solar> || std::is_same_v<Sys, zoo::henon_heiles>;
 
 namespace detail {
 
@@ -147,7 +148,10 @@ void taylor_coefficients(const vec<T, Sys::dof>& q0, const vec<T, Sys::dof>& v0,
       vx[k] = v[k][0];
       vy[k] = v[k][1];
       r2[k] = cauchy(x, x, k) + cauchy(y, y, k);
-      if constexpr (std::is_same_v<Sys, systems::kepler>) {
+      if constexpr (std::is_same_v<Sys, zoo::henon_heiles>) {
+        a[0] = -(x[k] + T(2) * cauchy(x, y, k));
+        a[1] = -(y[k] + cauchy(x, x, k) - cauchy(y, y, k));
+      } else if constexpr (std::is_same_v<Sys, systems::kepler>) {
         w[k] = inverse_cube_coefficient(r2, w, k);
         a[0] = -cauchy(x, w, k);
         a[1] = -cauchy(y, w, k);

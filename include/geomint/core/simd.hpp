@@ -22,8 +22,10 @@
 
 #include <Eigen/Core>
 
-#if defined(GEOMINT_HAVE_SLEEF)
+#if defined(__SSE2__)
 #include <immintrin.h>
+#endif
+#if defined(GEOMINT_HAVE_SLEEF)
 #include <sleef.h>
 #endif
 
@@ -38,6 +40,15 @@ inline constexpr int simd_width = GEOMINT_SIMD_WIDTH;
 inline constexpr int simd_width = 4;
 #else
 inline constexpr int simd_width = 2;
+#endif
+/// The lanes of an ensemble (geomint/ensemble.hpp, one trajectory per lane): the widest register,
+/// 8 with AVX-512, else simd_width (the stage packs' 4 with AVX-512 is the stage forces' choice).
+#if defined(GEOMINT_SIMD_WIDTH)
+inline constexpr int ensemble_width = GEOMINT_SIMD_WIDTH;
+#elif defined(__AVX512F__)
+inline constexpr int ensemble_width = 8;
+#else
+inline constexpr int ensemble_width = simd_width;
 #endif
 
 namespace detail {
@@ -151,15 +162,37 @@ double_pack<W> sqrt(const double_pack<W>& x) {
   return out;
 }
 
+/// a b + c of every lane with one rounding (as std::fma): the FMA instruction where the target
+/// has it, else std::fma per lane.
+template <int W>
+double_pack<W> fma(const double_pack<W>& a, const double_pack<W>& b, const double_pack<W>& c) {
+  using R [[maybe_unused]] = typename double_pack<W>::register_type;
+#if defined(__FMA__)
+  if constexpr (W == 2) return double_pack<W>((R)_mm_fmadd_pd((__m128d)a.v, (__m128d)b.v, (__m128d)c.v));
+  if constexpr (W == 4) return double_pack<W>((R)_mm256_fmadd_pd((__m256d)a.v, (__m256d)b.v, (__m256d)c.v));
+#endif
+#if defined(__AVX512F__)
+  if constexpr (W == 8) return double_pack<W>((R)_mm512_fmadd_pd((__m512d)a.v, (__m512d)b.v, (__m512d)c.v));
+#endif
+  double_pack<W> out;
+  for (int i = 0; i < W; ++i) out.set(i, std::fma(a[i], b[i], c[i]));
+  return out;
+}
+
+/// |x| of every lane (as std::fabs): the sign bits cleared, one vector AND.
 template <int W>
 double_pack<W> abs(const double_pack<W>& x) {
-  return detail::per_lane(x, [](double y) { return std::fabs(y); });
+  using R = typename double_pack<W>::register_type;
+  using bits = decltype(x.v < x.v);  // a vector of W 64-bit integers
+  const R sign = -R{};  // -0.0 in every lane: the sign bits
+  return double_pack<W>((R)((bits)x.v & ~(bits)sign));
 }
 
 }  // namespace simd
 
 using simd::double_pack;
 using simd::simd_width;
+using simd::ensemble_width;
 
 }  // namespace geomint
 

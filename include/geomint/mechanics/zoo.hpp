@@ -58,6 +58,13 @@ struct henon_heiles : natural<henon_heiles, 2> {
     const S& y = q[1];
     return S((x * x + y * y) / S(2) + x * x * y - y * y * y / S(3));
   }
+  /// grad V = (x + 2 x y, y + x^2 - y^2): no AD on V (also on SIMD packs, ensemble.hpp).
+  template <class S>
+  static vec<S, 2> potential_gradient(const vec<S, 2>& q) {
+    const S& x = q[0];
+    const S& y = q[1];
+    return vec<S, 2>(S(x + S(2) * x * y), S(y + x * x - y * y));
+  }
   template <class S>
   static mat<S, 2> mass_matrix() { return mat<S, 2>::Identity(); }
   /// H = 1/2 |qdot|^2 + V.

@@ -28,6 +28,7 @@
 #include <mp++/real128.hpp>
 
 #include "cli.hpp"
+#include "ensemble_data.hpp"
 #include "measurement.hpp"
 #include "regimes.hpp"
 
@@ -219,6 +220,9 @@ class ladder {
 struct options {
   std::string system = "pendulum";
   int digits = 16;
+  int ensemble = 0;  ///< --ensemble N: batch mode on N trajectories
+  std::uint64_t seed = 1;
+  double t_end = 1000;
   bool csv = false;
   int passes = 2;
   std::optional<double> max_seconds;
@@ -323,30 +327,130 @@ void run(const options& o) {
   for (const auto& goal : g.goals) targets.push_back(goal.error);
   targets.insert(targets.end(), g.others.begin(), g.others.end());
   for (double target : targets) {
-    std::cout << pre << "  error " << std::setprecision(0) << std::scientific << target << std::defaultfloat
-              << std::setprecision(4) << ":";
-    std::optional<double> best;
-    std::string best_name = "none";
-    for (const auto& rs : all) {
-      if (rs.empty()) continue;
-      const auto c = wp::cpu_at(rs, target);
-      std::cout << " " << rs.front().method << " ";
-      if (c) std::cout << *c << " s;";
-      else std::cout << "n/a;";
-      if (c && (!best || *c < *best)) {
-        best = c;
-        best_name = rs.front().method;
-      }
-    }
-    std::cout << " best heyoka " << best_name << " ";
-    if (best) std::cout << *best << " s";
+    std::optional<std::pair<std::string, double>> best;
+    wp::print_cpu_at(std::cout, all, target, pre, &best);
+    std::cout << std::setprecision(4) << " best heyoka " << (best ? best->first : std::string("none")) << " ";
+    if (best) std::cout << best->second << " s";
     else std::cout << "n/a";
     std::cout << "\n";
   }
 }
 
+/// --ensemble N: heyoka's batch mode (taylor_adaptive_batch, the recommended batch size: one
+/// trajectory per SIMD lane) on geomint-ensemble's ensembles, references and error measure
+/// (ensemble_data.hpp): the trajectories in blocks of the batch size, each block propagated to T
+/// from its initial states; CPU time per trajectory, the fastest of repeated runs; the error the
+/// largest final phase error over the trajectories. Variants: default and fast-math code.
+int run_ensemble(const options& o) {
+  const bool pendulum = o.system == "pendulum";
+  const int n = pendulum ? 1 : 2;
+  const auto x0 = wp::ensemble_initial_states(o.system, o.ensemble, o.seed);
+  const wp::final_states ref =
+      pendulum ? wp::references<geomint::systems::pendulum>(x0, o.t_end) : wp::references<geomint::zoo::henon_heiles>(x0, o.t_end);
+  const std::uint32_t batch = hy::recommended_simd_size<double>();
+  std::vector<std::pair<hy::expression, hy::expression>> eqs;
+  if (pendulum) {
+    auto [x, v] = hy::make_vars("x", "v");
+    eqs = {hy::prime(x) = v, hy::prime(v) = -hy::sin(x)};
+  } else {
+    auto [x, y, vx, vy] = hy::make_vars("x", "y", "vx", "vy");
+    eqs = {hy::prime(x) = vx, hy::prime(y) = vy, hy::prime(vx) = -(x + 2. * x * y), hy::prime(vy) = -(y + x * x - y * y)};
+  }
+  const auto block_state = [&](std::size_t first) {
+    // Variable i of lane l at i * batch + l; lanes past the last trajectory repeat it.
+    std::vector<double> st(static_cast<std::size_t>(2 * n) * batch);
+    for (std::uint32_t l = 0; l < batch; ++l) {
+      const auto& x = x0[std::min(first + l, x0.size() - 1)];
+      for (int i = 0; i < 2 * n; ++i) st[std::size_t(i) * batch + l] = x[std::size_t(i)];
+    }
+    return st;
+  };
+  // One pass over the ensemble: CPU seconds, the final states in `out`, or nullopt on failure.
+  const auto pass = [&](hy::taylor_adaptive_batch<double>& ta, std::vector<wp::ensemble_state>& out) -> std::optional<double> {
+    out.assign(x0.size(), wp::ensemble_state(std::size_t(2 * n)));
+    double spent = 0;
+    for (std::size_t first = 0; first < x0.size(); first += batch) {
+      const auto st = block_state(first);
+      std::copy(st.begin(), st.end(), ta.get_state_data());
+      ta.set_time(0.);
+      const double t0 = wp::cpu_now();
+      ta.propagate_until(o.t_end);
+      spent += wp::cpu_now() - t0;
+      for (const auto& res : ta.get_propagate_res())
+        if (std::get<0>(res) != hy::taylor_outcome::time_limit) return std::nullopt;
+      for (std::uint32_t l = 0; l < batch && first + l < x0.size(); ++l)
+        for (int i = 0; i < 2 * n; ++i) out[first + l][std::size_t(i)] = ta.get_state_data()[std::size_t(i) * batch + l];
+    }
+    return spent;
+  };
+  std::vector<std::vector<wp::result>> all;
+  for (const bool fast_math : {false, true}) {
+    const std::string name = fast_math ? "heyoka-batch-fast-math" : "heyoka-batch";
+    if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), name) == o.only.end()) continue;
+    std::vector<wp::result> pts;
+    std::vector<std::unique_ptr<hy::taylor_adaptive_batch<double>>> tas;
+    double prev = std::numeric_limits<double>::infinity();
+    int worse = 0;
+    for (long knob = 16; std::pow(10.0, -double(knob) / 4) >= std::numeric_limits<double>::epsilon(); ++knob) {
+      auto ta = std::make_unique<hy::taylor_adaptive_batch<double>>(eqs, block_state(0), batch, hy::kw::tol = std::pow(10.0, -double(knob) / 4),
+                                                                    hy::kw::fast_math = fast_math);
+      std::vector<wp::ensemble_state> out;
+      double best = std::numeric_limits<double>::infinity(), spent = 0;
+      bool failed = false;
+      for (int rep = 0; rep < 10; ++rep) {
+        const auto dt = pass(*ta, out);
+        if (!dt) {
+          failed = true;
+          break;
+        }
+        best = std::min(best, *dt);
+        spent += *dt;
+        if (rep >= 1 && spent > 0.2) break;
+      }
+      if (failed) {
+        std::cerr << "geomint-peer-heyoka: " << name << " failed at tolerance knob " << knob << "\n";
+        break;
+      }
+      wp::result r;
+      r.method = name;
+      r.knob = knob;
+      r.cpu = best / double(x0.size());
+      r.final_error = wp::largest_error(out, ref);
+      pts.push_back(r);
+      tas.push_back(std::move(ta));
+      if (r.final_error < 1e-13 || best > o.max_seconds.value_or(2.0)) break;
+      if (r.final_error >= prev && r.final_error < 1e-6) {
+        if (++worse >= 8) break;
+      } else {
+        worse = 0;
+      }
+      prev = std::min(prev, r.final_error);
+    }
+    for (int p = 2; p <= o.passes; ++p)
+      for (std::size_t k = 0; k < pts.size(); ++k) {
+        std::vector<wp::ensemble_state> out;
+        if (const auto dt = pass(*tas[k], out)) pts[k].cpu = std::min(pts[k].cpu, *dt / double(x0.size()));
+      }
+    all.push_back(std::move(pts));
+  }
+  if (o.csv) std::cout << "method,tau,steps,cpu_seconds_per_trajectory,max_final_error\n";
+  else
+    std::cout << "system " << o.system << ", " << o.ensemble << " trajectories (seed " << o.seed << "), T = " << o.t_end
+              << ", double; heyoka " << HEYOKA_VERSION_STRING << " batch mode, batch size " << batch
+              << "; CPU time per trajectory of propagate_until only (JIT excluded)\n";
+  for (const auto& rs : all)
+    for (const auto& r : rs)
+      if (o.csv) std::cout << std::setprecision(6) << r.method << ",,," << r.cpu << ',' << r.final_error << '\n';
+      else
+        std::cout << std::left << std::setw(26) << r.method << std::right << std::setprecision(4) << "  tol 10^(-" << r.knob
+                  << "/4)" << std::setw(14) << r.cpu << std::setw(14) << r.final_error << '\n';
+  wp::print_ensemble_summary(std::cout, o.system, o.ensemble, all, o.csv);
+  return 0;
+}
+
 const char* usage =
-    "usage: geomint-peer-heyoka [--system pendulum|kepler|outer-solar] [--digits 16|50] [--csv] [--passes N (1..10)]\n"
+    "usage: geomint-peer-heyoka [--system pendulum|kepler|outer-solar|henon-heiles] [--digits 16|50] [--csv] [--passes N (1..10)]\n"
+    "                           [--ensemble N (1..65536) [--seed K] [--t-end T (0..10^5)]]\n"
     "                           [--max-seconds S (> 0)] [--methods a,b,...]\n"
     "heyoka's taylor_adaptive on geomint-workprecision's problems, references and final-error\n"
     "measure; a ladder of tolerances 10^(-k/4) per variant; CPU time of propagate_until only\n"
@@ -356,6 +460,10 @@ const char* usage =
     "heyoka-double-compact-fast-math.\n"
     "--digits 50: T = 100: heyoka-real128, heyoka-real128-compact (quadruple precision),\n"
     "heyoka-real-113, heyoka-real-166 (MPFR, compact mode).\n"
+    "--ensemble N: heyoka's batch mode on geomint-ensemble's ensembles of N trajectories (--system\n"
+    "pendulum|henon-heiles, --seed K, --t-end T as there): heyoka-batch, heyoka-batch-fast-math;\n"
+    "its columns method,tau,steps,cpu_seconds_per_trajectory,max_final_error (tau and steps empty;\n"
+    "the table: the tolerance, the CPU seconds per trajectory, the largest final error).\n"
     "--csv prints geomint-workprecision's columns method,tau,steps,cpu_seconds,final_error,\n"
     "max_energy_error and the summary as '#' lines.\n"
     "Exit status: 0, 2 (bad command line), 1 (failure), 4 (output failed).\n";
@@ -366,7 +474,15 @@ int main(int argc, char** argv) {
   options o;
   geomint::cli::parser cl("geomint-peer-heyoka", usage);
   cl.toggle("--csv", [&] { o.csv = true; })
-      .value("--system", [&](const std::string& v) { o.system = geomint::cli::parse_choice("--system", v, {"pendulum", "kepler", "outer-solar"}); })
+      .value("--system",
+             [&](const std::string& v) { o.system = geomint::cli::parse_choice("--system", v, {"pendulum", "kepler", "outer-solar", "henon-heiles"}); })
+      .value("--ensemble", [&](const std::string& v) { o.ensemble = geomint::cli::parse_integer<int>("--ensemble", v, 1, 65536); })
+      .value("--seed", [&](const std::string& v) { o.seed = geomint::cli::parse_integer<std::uint64_t>("--seed", v, 0, ~std::uint64_t(0)); })
+      .value("--t-end",
+             [&](const std::string& v) {
+               o.t_end = geomint::cli::parse_real("--t-end", v, geomint::cli::real_bound::positive);
+               if (o.t_end > 1e5) throw geomint::cli::usage_error("--t-end is out of range: '" + v + "' (expected T <= 10^5)");
+             })
       .value("--digits",
              [&](const std::string& v) { o.digits = geomint::cli::parse_choice("--digits", v, {"16", "50"}) == "16" ? 16 : 50; })
       .value("--max-seconds",
@@ -374,8 +490,17 @@ int main(int argc, char** argv) {
       .value("--methods", [&](const std::string& v) { o.only = geomint::cli::split_list("--methods", v); })
       .value("--passes", [&](const std::string& v) { o.passes = geomint::cli::parse_integer<int>("--passes", v, 1, 10); });
   if (const auto done = cl.parse(argc, argv)) return *done;
+  if (o.ensemble == 0 && o.system == "henon-heiles") {
+    std::cerr << "geomint-peer-heyoka: --system henon-heiles needs --ensemble N\n" << usage;
+    return 2;
+  }
+  if (o.ensemble > 0 && o.system != "pendulum" && o.system != "henon-heiles") {
+    std::cerr << "geomint-peer-heyoka: --ensemble takes --system pendulum or henon-heiles\n" << usage;
+    return 2;
+  }
   try {
-    if (o.system == "kepler") run<wp::kepler_problem>(o);
+    if (o.ensemble > 0) run_ensemble(o);
+    else if (o.system == "kepler") run<wp::kepler_problem>(o);
     else if (o.system == "outer-solar") run<wp::outer_solar_problem>(o);
     else run<wp::pendulum_problem>(o);
     return geomint::cli::finish_stdout("geomint-peer-heyoka", 0);
