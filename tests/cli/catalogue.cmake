@@ -6,6 +6,8 @@ set(_header "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,sta
 # section IV.5); Lobatto IIIC s = 3 order 4, not symplectic (Chipman 1971; ibid.); RKN6(4)6FM
 # order 6 (Dormand, El-Mikkawy & Prince 1987); Suzuki's method order 4, symplectic (Suzuki 1990;
 # 5 Stormer-Verlet steps of 2 stages, 10 stages as one rkn tableau).
+# Radau IIA and IA with s = 5 (over their stage algebra): order 9, stage orders 5 and 4,
+# A-stable with R(z) the (4,5) Pade approximant, so phase lag order 10 and dissipation order 9.
 # Verdicts: Gauss symmetric, Radau and Lobatto IIIC not; stage orders s, s and s - 1; all three
 # A-stable (Hairer & Wanner II, section IV.5); their R(z) are the (3,3), (2,3) and (1,3) Pade
 # approximants, so on the oscillator |R(iy)| = 1 for Gauss (dissipation inf) and
@@ -21,7 +23,8 @@ set(_header "scheme,nodes,m,stages,order,symplectic,symmetric,error_constant,sta
 set(_c "[0-9][.][0-9][0-9][0-9]e-0[0-9]")
 foreach(_case "gauss-3,-,-,3,6,yes,yes,${_c},inf,6,rk,3,a-stable,inf" "radau-iia-3,-,-,3,5,no,no,${_c},inf,6,rk,3,a-stable,5"
               "lobatto-iiic-3,-,-,3,4,no,no,${_c},inf,4,rk,2,a-stable,5" "demp-rkn64,-,-,6,6,no,no,${_c},0,6,rkn,2,none,7"
-              "suzuki-4,-,-,10,4,yes,yes,${_c},2[.]72097453856014969076597167175,4,rkn,2,periodic,inf")
+              "suzuki-4,-,-,10,4,yes,yes,${_c},2[.]72097453856014969076597167175,4,rkn,2,periodic,inf"
+              "radau-iia-5,-,-,5,9,no,no,${_c},inf,10,rk,5,a-stable,9" "radau-ia-5,-,-,5,9,no,no,${_c},inf,10,rk,4,a-stable,9")
   string(REGEX MATCH "^[^,]+" _name "${_case}")
   geomint_cli_test(geomint_cli_scheme_catalogue_${_name} zero "${_header}.${_case}"
                    $<TARGET_FILE:geomint-scheme> --analyse --scheme ${_name} --csv)
@@ -46,6 +49,12 @@ geomint_cli_test(geomint_cli_scheme_catalogue_components zero "order of each com
 geomint_cli_test(geomint_cli_scheme_catalogue_print zero
                  "kind rk.stages 3.name gauss-3.field r.2-15.c 1/2-1/10[*]r 1/2 1/2[+]1/10[*]r.a [^\n]*.b 5/18 4/9 5/18"
                  $<TARGET_FILE:geomint-scheme> --print-tableau --scheme gauss-3)
+# Radau IIA, s = 5, has no tableau file (its entries lie in a field of degree 24): its operators
+# on Q[x]/(N), N = P*_5 - P*_4 made monic, and the 30-digit tableau, whose last row is b
+# (c_5 = 1, b_5 = 1/s^2 = 0.04; Hairer & Wanner II, section IV.5).
+geomint_cli_test(geomint_cli_scheme_catalogue_print_algebra zero
+                 "not a tableau file.kind rk, 5 stages, name radau-iia-5.stages: the roots of N.x. = 1 x.5 [+] .-25/9. x.4.*decimal tableau .30 digits.*c_5 = 1.  a: [-0-9. ]* 0[.]04.  b = 0[.]04"
+                 $<TARGET_FILE:geomint-scheme> --print-tableau --scheme radau-iia-5)
 # (The IIIA-IIIB pairs are left out: their P-series analysis to order 8 takes 15 s in the test
 # build; tests/methods/test_catalogue.cpp checks them.)
 foreach(_name gauss-3 radau-ia-3 forest-ruth demp-rkn43 nystrom-4)

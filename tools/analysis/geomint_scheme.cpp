@@ -35,6 +35,7 @@
 
 #include "../common/cli.hpp"
 #include "geomint/analysis/bseries/error_constants.hpp"
+#include "geomint/analysis/collocation_algebra_analysis.hpp"
 #include "geomint/analysis/bseries/method_analysis.hpp"
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/method_verdicts.hpp"
@@ -93,7 +94,9 @@ const std::string usage_text =
     "              or NAME, a method of the catalogue from the literature (gauss-3, radau-iia-3,\n"
     "              lobatto-iiia-iiib-4, forest-ruth, demp-rkn64, ...): with --analyse the same\n"
     "              analysis and CSV as --tableau FILE; with --print-tableau its exact tableau as a\n"
-    "              tableau file (--m and --nodes do not apply)\n"
+    "              tableau file (radau-iia-5, radau-ia-5: their entries lie in a field of degree\n"
+    "              24; analysed over Q[x]/(N), printed as its operators and a 30-digit tableau;\n"
+    "              --m and --nodes do not apply)\n"
     "  --list-methods  the catalogue: name, kind, stages, published order, title, source (CSV)\n"
     "  --nodes F   equispaced (default), gauss-interior, lobatto, chebyshev (also gauss_interior,\n"
     "              gauss-lobatto, chebyshev-lobatto, ...), a comma list, or all (lpf only)\n"
@@ -292,44 +295,95 @@ void print_oscillator(const Result& ls, const stability_interval& interval) {
 /// by read_tableau_file, the data geomint-run --tableau integrates), its principal error
 /// constants (analysis/bseries/error_constants.hpp) and its verdicts
 /// (analysis/method_verdicts.hpp): symmetry, stage order, linear stability.
-int analyse_file(const options& o, const methods::tableau_data<methods::field_element>& t) {
-  const analysis::bseries::method_analysis r = analysis::bseries::analyse_method(t);
-  const method_verdicts v = verdicts(t);
-  const std::string order = std::to_string(r.order) + (r.order_is_lower_bound ? "+" : "");
-  const std::string name = t.name.empty() ? std::string("-") : t.name;
-  const std::string kind(methods::to_string(t.kind));
+/// One method's analysis, from a tableau or from a stage algebra, as analyse_report prints it.
+struct method_report {
+  std::string name, kind;
+  methods::method_kind kind_id = methods::method_kind::rk;
+  int stages = 0;
+  analysis::bseries::method_analysis r;
+  method_verdicts v;
   bool has_constants = false;
   analysis::bseries::error_constants<methods::field_element> ec;
   std::string constants_reason = "the order is a lower bound";
-  if (!r.order_is_lower_bound) {
-    try {
-      ec = analysis::bseries::principal_error_constants(t, r.order);
-      has_constants = true;
-    } catch (const std::exception& e) {
-      constants_reason = e.what();
-    }
+  std::vector<std::string> defects;  ///< where the symplecticity conditions fail
+};
+
+/// The error constants of `r` when its order is exact (`constants(order)`).
+template <class Constants>
+void add_constants(method_report& m, Constants constants) {
+  if (m.r.order_is_lower_bound) return;
+  try {
+    m.ec = constants(m.r.order);
+    m.has_constants = true;
+  } catch (const std::exception& e) {
+    m.constants_reason = e.what();
   }
+}
+
+method_report report_of(const methods::tableau_data<methods::field_element>& t) {
+  method_report m;
+  m.r = analysis::bseries::analyse_method(t);
+  m.v = verdicts(t);
+  m.name = t.name.empty() ? std::string("-") : t.name;
+  m.kind_id = t.kind;
+  m.kind = std::string(methods::to_string(t.kind));
+  m.stages = t.stages;
+  add_constants(m, [&](int order) { return analysis::bseries::principal_error_constants(t, order); });
+  if (!m.r.symplectic) {
+    const auto sy = analysis::symplecticity_conditions(t);
+    if (sy.defect_i >= 0)
+      m.defects.push_back("defect of " + sy.matrix_condition + " at (i, j) = (" + std::to_string(sy.defect_i + 1) + ", " +
+                          std::to_string(sy.defect_j + 1) + "): " +
+                          exact_text(sy.defect[static_cast<std::size_t>(sy.defect_i)][static_cast<std::size_t>(sy.defect_j)]));
+    if (sy.weight_defect_i >= 0)
+      m.defects.push_back("defect of " + sy.weight_condition + " at i = " + std::to_string(sy.weight_defect_i + 1) + ": " +
+                          exact_text(sy.weight_defect[static_cast<std::size_t>(sy.weight_defect_i)]));
+  }
+  return m;
+}
+
+/// A method over its stage algebra (Radau with s = 5: analysis/collocation_algebra_analysis.hpp).
+method_report report_of(const methods::rk_stage_algebra& a) {
+  method_report m;
+  m.r = analysis::bseries::analyse_method(a);
+  m.v = analysis::verdicts(a);
+  m.name = a.name;
+  m.kind = "rk";
+  m.stages = a.stages;
+  add_constants(m, [&](int order) { return analysis::bseries::principal_error_constants(a, order); });
+  const auto sy = analysis::symplecticity_conditions(a);
+  if (sy.defect_k >= 0)
+    m.defects.push_back("defect of G A + A^T G - beta beta^T on (x^k, x^l) at (k, l) = (" + std::to_string(sy.defect_k) + ", " +
+                        std::to_string(sy.defect_l) + "): " +
+                        exact_text(methods::field_element(sy.defect[static_cast<std::size_t>(sy.defect_k)][static_cast<std::size_t>(sy.defect_l)])));
+  return m;
+}
+
+int analyse_report(const options& o, const method_report& m) {
+  const auto& r = m.r;
+  const auto& v = m.v;
+  const auto& ec = m.ec;
+  const std::string order = std::to_string(r.order) + (r.order_is_lower_bound ? "+" : "");
   const bool oscillator = v.has_oscillator || v.oscillator_in_field;
   const bool determinant_is_one = v.has_oscillator ? v.oscillator.determinant_is_one : v.field_oscillator.determinant_is_one;
   const int phase_lag_order = v.has_oscillator ? v.oscillator.phase_lag_order : v.field_oscillator.phase_lag_order;
   const int dissipation_order = v.has_oscillator ? v.oscillator.dissipation_order : v.field_oscillator.dissipation_order;
   const std::string dissipation = !oscillator ? "-" : (determinant_is_one ? "inf" : std::to_string(dissipation_order));
   if (o.csv) {
-    std::cout << analyse_header << name << ",-,-," << t.stages << "," << order << "," << (r.symplectic ? "yes" : "no") << ","
-              << (v.symmetric ? "yes" : "no") << "," << (has_constants ? constant_text(ec.squared) : "-") << ","
+    std::cout << analyse_header << m.name << ",-,-," << m.stages << "," << order << "," << (r.symplectic ? "yes" : "no") << ","
+              << (v.symmetric ? "yes" : "no") << "," << (m.has_constants ? constant_text(ec.squared) : "-") << ","
               << (v.has_stability ? interval_text(v.interval) : "-") << "," << (oscillator ? std::to_string(phase_lag_order) : "-") << ","
-              << kind << "," << v.stage_order << "," << (v.has_stability ? std::string(to_string(v.stability)) : "-") << ","
+              << m.kind << "," << v.stage_order << "," << (v.has_stability ? std::string(to_string(v.stability)) : "-") << ","
               << dissipation << "\n";
     return cli::finish_stdout("geomint-scheme");
   }
-  std::cout << o.method_label << ": " << name << " (" << kind << ", " << t.stages << " stages)\n"
+  const bool nystrom_trees = m.kind_id == methods::method_kind::rkn || m.kind_id == methods::method_kind::nystrom;
+  std::cout << o.method_label << ": " << m.name << " (" << m.kind << ", " << m.stages << " stages)\n"
             << "  order " << order << " ("
-            << (t.kind == methods::method_kind::rkn || t.kind == methods::method_kind::nystrom
-                    ? "Nystrom trees"
-                    : r.colours == 1 ? "B-series, rooted trees" : "P-series, bi-coloured trees")
+            << (nystrom_trees ? "Nystrom trees" : r.colours == 1 ? "B-series, rooted trees" : "P-series, bi-coloured trees")
             << " up to order " << r.tree_order << "), stage order " << v.stage_order << "\n";
   if (r.colours == 2) {
-    const bool prk = t.kind == methods::method_kind::prk;
+    const bool prk = m.kind_id == methods::method_kind::prk;
     auto component = [&](std::size_t k) {
       return std::to_string(r.component_order[k]) + (r.component_order_is_lower_bound[k] ? "+" : "");
     };
@@ -338,28 +392,20 @@ int analyse_file(const options& o, const methods::tableau_data<methods::field_el
   }
   std::cout << "  symplectic: " << (r.symplectic ? "yes" : "no") << " (" << r.symplecticity_basis << "); symmetric: "
             << (v.symmetric ? "yes" : "no") << " (up to a permutation of the stages)\n";
-  if (!r.symplectic) {
-    const auto sy = analysis::symplecticity_conditions(t);
-    if (sy.defect_i >= 0)
-      std::cout << "  defect of " << sy.matrix_condition << " at (i, j) = (" << sy.defect_i + 1 << ", " << sy.defect_j + 1
-                << "): " << exact_text(sy.defect[static_cast<std::size_t>(sy.defect_i)][static_cast<std::size_t>(sy.defect_j)]) << "\n";
-    if (sy.weight_defect_i >= 0)
-      std::cout << "  defect of " << sy.weight_condition << " at i = " << sy.weight_defect_i + 1 << ": "
-                << exact_text(sy.weight_defect[static_cast<std::size_t>(sy.weight_defect_i)]) << "\n";
-  }
-  if (has_constants) {
+  for (const std::string& d : m.defects) std::cout << "  " << d << "\n";
+  if (m.has_constants) {
     std::cout << "  principal error constant C = " << constant_text(ec.squared);
     if (ec.squared.is_rational()) std::cout << ", C^2 = " << exact_text(ec.squared);
-    if (t.kind == methods::method_kind::prk)
+    if (m.kind_id == methods::method_kind::prk)
       std::cout << " (first component (A, b) C_1 = " << constant_text(ec.first_squared) << ", second (Ahat, bhat) C_2 = "
                 << constant_text(ec.second_squared) << ")";
     else if (ec.components == 2)
       std::cout << " (position C_q = " << constant_text(ec.first_squared) << ", velocity C_p = " << constant_text(ec.second_squared) << ")";
     std::cout << " at order " << ec.order + 1 << "\n";
   } else {
-    std::cout << "  principal error constant: not computed (" << constants_reason << ")\n";
+    std::cout << "  principal error constant: not computed (" << m.constants_reason << ")\n";
   }
-  if (t.kind == methods::method_kind::rk) {
+  if (m.kind_id == methods::method_kind::rk) {
     if (v.has_rk || v.rk_in_field) {
       const bool a_stable = v.has_rk ? v.rk.a_stable : v.field_rk.a_stable, l_stable = v.has_rk ? v.rk.l_stable : v.field_rk.l_stable;
       std::cout << "  y' = lambda y: R(z) = ("
@@ -380,6 +426,8 @@ int analyse_file(const options& o, const methods::tableau_data<methods::field_el
   if (v.has_stability) std::cout << "  stability: " << to_string(v.stability) << ", interval " << interval_text(v.interval) << "\n";
   return cli::finish_stdout("geomint-scheme");
 }
+
+int analyse_file(const options& o, const methods::tableau_data<methods::field_element>& t) { return analyse_report(o, report_of(t)); }
 
 int analyse(const options& o) {
   if (o.csv) std::cout << analyse_header;
@@ -481,9 +529,41 @@ int list_methods() {
   return cli::finish_stdout("geomint-scheme");
 }
 
+/// --print-tableau --scheme NAME of a method over its stage algebra (Radau with s = 5): the
+/// exact operators on Q[x]/(N), as for the built-in schemes, and the decimal tableau in 30
+/// digits. Not a tableau file: its entries lie in a field of degree 24.
+int print_catalogue_algebra(const methods::catalogue_entry& e) {
+  const methods::rk_stage_algebra m = e.algebra();
+  const int s = m.stages;
+  std::cout << "# " << e.title << ": " << e.source << "\n# the entries lie in a number field of degree 24, so this is the exact "
+            << "method on its stage algebra, not a tableau file\nkind rk, " << s << " stages, name " << m.name
+            << "\nstages: the roots of N(x) = ";
+  for (int k = s; k >= 0; --k) {
+    const auto& nk = m.node_polynomial[static_cast<std::size_t>(k)];
+    if (!nk.is_zero()) std::cout << (k == s ? "" : " + (") << nk.str() << (k == s ? "" : ")") << (k ? " x^" + std::to_string(k) : "");
+  }
+  std::cout << "\nexact tableau on Q[x]/(N), monomial basis 1, x, ..., x^" << s - 1 << " (column k: the image of x^k)\nA:\n";
+  for (const auto& row : m.a) {
+    for (const auto& x : row) std::cout << "  " << x.str();
+    std::cout << "\n";
+  }
+  std::cout << "b:";
+  for (const auto& x : m.b) std::cout << " " << x.str();
+  const auto n = e.name == "radau-iia-5" ? methods::radau_iia_numeric<5>::numeric_tableau<decimal>()
+                                         : methods::radau_ia_numeric<5>::numeric_tableau<decimal>();
+  std::cout << "\ndecimal tableau (30 digits; nodes from core/nodes.hpp)\n";
+  for (std::size_t i = 0; i < static_cast<std::size_t>(s); ++i) {
+    std::cout << "c_" << i + 1 << " = " << digits30(n.c[i]) << "\n  a:";
+    for (std::size_t j = 0; j < static_cast<std::size_t>(s); ++j) std::cout << " " << digits30(n.a[i][j]);
+    std::cout << "\n  b = " << digits30(n.b[i]) << "\n";
+  }
+  return cli::finish_stdout("geomint-scheme");
+}
+
 /// --print-tableau --scheme NAME: the catalogue method as a tableau file (read back by
 /// --analyse --tableau and geomint-run --tableau).
 int print_catalogue_tableau(const methods::catalogue_entry& e) {
+  if (e.algebra) return print_catalogue_algebra(e);
   const methods::tableau_data<methods::field_element> t = e.tableau();
   std::shared_ptr<const methods::algebraic_field> field;
   auto note = [&](const std::vector<methods::field_element>& v) {
@@ -578,7 +658,7 @@ int main(int argc, char** argv) {
     o.method_label = "catalogue method " + e.name + " (" + e.title + "; " + e.source + ")";
     try {
       if (o.mode == "tableau") return print_catalogue_tableau(e);
-      return analyse_file(o, e.tableau());
+      return e.algebra ? analyse_report(o, report_of(e.algebra())) : analyse_file(o, e.tableau());
     } catch (const std::exception& ex) {
       std::cerr << "geomint-scheme: " << o.catalogue_name << ": " << ex.what() << "\n";
       return cli::finish_stdout("geomint-scheme", cli::exit_run_failure);

@@ -357,16 +357,12 @@ struct method_verdicts {
   bool l_stable = false;  ///< rk only
 };
 
+/// The stability verdicts of `v` (has_rk, rk, has_oscillator, oscillator, their field
+/// counterparts, has_stability, stability, interval, l_stable) from the linear part of t: its
+/// R(z) and its step on y'' = -y (any tableau with the same linear maps gives the same ones:
+/// analysis/collocation_algebra_analysis.hpp uses that).
 template <class K>
-method_verdicts verdicts(const methods::tableau_data<K>& t) {
-  method_verdicts v;
-  v.permutation = symmetry_permutation(t);
-  v.symmetric = v.permutation.found;
-  if (!v.symmetric) {  // a reducible method is symmetric if its irreducible method is (the map is the same)
-    const methods::tableau_data<K> reduced = methods::irreducible_form(t).method;
-    v.symmetric = reduced.stages < t.stages && symmetry_permutation(reduced).found;
-  }
-  v.stage_order = stage_order(t);
+void add_stability_verdicts(method_verdicts& v, const methods::tableau_data<K>& t) {
   // result = compute() and decided = true, or the reason it could not be decided.
   auto attempt = [](auto compute, auto& result, bool& decided, std::string& reason) {
     try {
@@ -402,6 +398,19 @@ method_verdicts verdicts(const methods::tableau_data<K>& t) {
     else
       v.stability = v.interval.kind == stability_kind::periodic ? stability_verdict::periodic : stability_verdict::absolute;
   }
+}
+
+template <class K>
+method_verdicts verdicts(const methods::tableau_data<K>& t) {
+  method_verdicts v;
+  v.permutation = symmetry_permutation(t);
+  v.symmetric = v.permutation.found;
+  if (!v.symmetric) {  // a reducible method is symmetric if its irreducible method is (the map is the same)
+    const methods::tableau_data<K> reduced = methods::irreducible_form(t).method;
+    v.symmetric = reduced.stages < t.stages && symmetry_permutation(reduced).found;
+  }
+  v.stage_order = stage_order(t);
+  add_stability_verdicts(v, t);
   return v;
 }
 

@@ -11,7 +11,8 @@
 /// - Splittings over a quadratic field: McLachlan's symmetric order-4 RKN methods SB3A with 4 and
 ///   5 force evaluations.
 /// - The collocation-type families (methods/collocation_families.hpp): Gauss, Radau IIA, Radau
-///   IA, Lobatto IIIA, IIIB, IIIC and the IIIA-IIIB pair.
+///   IA, Lobatto IIIA, IIIB, IIIC and the IIIA-IIIB pair; Radau with s = 5 over its stage
+///   algebra (methods/collocation_algebra.hpp: `algebra` instead of `tableau`).
 ///
 /// The explicit methods, compositions and splittings are constexpr tableaux, their number fields
 /// algebraic_number (methods/algebraic_number.hpp), so tests/methods/static_catalogue.cpp checks
@@ -28,6 +29,7 @@
 
 #include "geomint/core/rational.hpp"
 #include "geomint/methods/algebraic_number.hpp"
+#include "geomint/methods/collocation_algebra.hpp"
 #include "geomint/methods/collocation_families.hpp"
 #include "geomint/methods/composition.hpp"
 #include "geomint/methods/nystrom_form.hpp"
@@ -252,7 +254,10 @@ struct catalogue_entry {
   int order = 0;        ///< published order
   bool symplectic = false;
   bool symmetric = false;
-  std::function<tableau_data<field_element>()> tableau;  ///< exact, compositions as their rkn tableau
+  /// Exact, compositions as their rkn tableau; empty where the entries need too large a field
+  /// (Radau with s = 5), which `algebra` gives instead.
+  std::function<tableau_data<field_element>()> tableau;
+  std::function<rk_stage_algebra()> algebra;  ///< the rk method over its stage algebra, or empty
 };
 
 namespace detail {
@@ -318,8 +323,8 @@ inline std::vector<catalogue_entry> make_catalogue() {
   const family families[] = {
       {collocation_family::gauss, "gauss", "Gauss", 2, 5, 0, true, true,
        "Butcher 1964; Hairer & Wanner II, section IV.5; Hairer, Lubich & Wanner, sections V.2 and VI.4"},
-      {collocation_family::radau_iia, "radau-iia", "Radau IIA", 2, 4, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
-      {collocation_family::radau_ia, "radau-ia", "Radau IA", 2, 4, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
+      {collocation_family::radau_iia, "radau-iia", "Radau IIA", 2, 5, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
+      {collocation_family::radau_ia, "radau-ia", "Radau IA", 2, 5, -1, false, false, "Ehle 1969; Hairer & Wanner II, section IV.5"},
       {collocation_family::lobatto_iiia, "lobatto-iiia", "Lobatto IIIA", 2, 5, -2, false, true,
        "Ehle 1969; Hairer & Wanner II, section IV.5; Hairer, Lubich & Wanner, sections II.1.4 and V.2"},
       {collocation_family::lobatto_iiib, "lobatto-iiib", "Lobatto IIIB", 2, 5, -2, false, true,
@@ -348,6 +353,12 @@ inline std::vector<catalogue_entry> make_catalogue() {
         e.source += "; reducible to the implicit midpoint rule (symplectic)";
       }
       const std::string name = e.name;
+      if ((f.id == collocation_family::radau_iia || f.id == collocation_family::radau_ia) && s == 5) {
+        const bool right = f.id == collocation_family::radau_iia;
+        e.algebra = [right] { return right ? radau_iia_algebra(5) : radau_ia_algebra(5); };
+        out.push_back(std::move(e));
+        continue;
+      }
       e.tableau = [id = f.id, s, name] {
         tableau_data<field_element> d = collocation_family_tableau(id, s);
         d.name = name;

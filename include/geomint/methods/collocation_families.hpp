@@ -29,7 +29,8 @@
 /// N(theta - 2 z) (a gcd over Q(theta)), x_1 = theta - 2 x_2, and the others follow from the
 /// symmetry x -> 1 - x of the Gauss nodes or from the sum of the roots of the cubic. Radau with
 /// s = 5 is not here: the splitting field of its quartic has Galois group S4 and degree 24 (the
-/// series of Gauss s = 5, in degree 8, already cost seconds per tree order). The Gauss methods of
+/// series of Gauss s = 5, in degree 8, already cost seconds per tree order); it is analysed over
+/// its stage algebra Q[x]/(N) instead (methods/collocation_algebra.hpp). The Gauss methods of
 /// any s as RKN tableaux over their stage algebra are `galerkin_tableau<s>` of
 /// analysis/collocation_tableaux.hpp.
 /// The coefficients are field_element over that one field (methods/number_field.hpp), solved
@@ -57,8 +58,10 @@ namespace detail {
 using field_vector = std::vector<field_element>;
 using field_matrix = std::vector<field_vector>;
 
-/// Solves M x = y exactly (Gaussian elimination with an exactly nonzero pivot).
-inline field_vector solve_exact(field_matrix m, field_vector y) {
+/// Solves M x = y exactly (Gaussian elimination with an exactly nonzero pivot) over an exact K
+/// (field_element, exact_rational); std::logic_error when M is singular.
+template <class K>
+std::vector<K> solve_exact(std::vector<std::vector<K>> m, std::vector<K> y) {
   const std::size_t n = y.size();
   for (std::size_t k = 0; k < n; ++k) {
     std::size_t p = k;
@@ -68,14 +71,14 @@ inline field_vector solve_exact(field_matrix m, field_vector y) {
     std::swap(y[p], y[k]);
     for (std::size_t i = k + 1; i < n; ++i) {
       if (m[i][k].is_zero()) continue;
-      const field_element f = m[i][k] / m[k][k];
+      const K f = m[i][k] / m[k][k];
       for (std::size_t j = k; j < n; ++j) m[i][j] -= f * m[k][j];
       y[i] -= f * y[k];
     }
   }
-  field_vector x(n);
+  std::vector<K> x(n);
   for (std::size_t i = n; i-- > 0;) {
-    field_element s = y[i];
+    K s = y[i];
     for (std::size_t j = i + 1; j < n; ++j) s -= m[i][j] * x[j];
     x[i] = s / m[i][i];
   }
@@ -337,10 +340,7 @@ struct collocation_method {
 };
 template <int S>
 using gauss = collocation_method<collocation_family::gauss, S>;
-template <int S>
-using radau_iia = collocation_method<collocation_family::radau_iia, S>;
-template <int S>
-using radau_ia = collocation_method<collocation_family::radau_ia, S>;
+// radau_iia<S> and radau_ia<S>: methods/collocation_algebra.hpp (s = 5 over its stage algebra).
 template <int S>
 using lobatto_iiia = collocation_method<collocation_family::lobatto_iiia, S>;
 template <int S>

@@ -329,8 +329,8 @@ constexpr method_kind kind_of() {
 
 }  // namespace detail
 
-/// The scheme of the method `Provider::tableau()` (see the top of the file). `Provider::name()`,
-/// if present, names it.
+/// The scheme of the method `Provider::tableau()` (see the top of the file), or of
+/// `Provider::numeric_tableau<T>()` where present. `Provider::name()`, if present, names it.
 template <class Provider>
 struct tableau_method {
   using tableau_type = std::remove_cvref_t<decltype(Provider::tableau())>;
@@ -346,7 +346,15 @@ struct tableau_method {
                                           detail::kind_of<tableau_type>() != method_kind::prk),
                   "geomint::methods::tableau_method: an rkn or prk tableau runs on natural systems only (derived from "
                   "geomint::natural); for a general Lagrangian write the method as a nystrom (or rk) tableau");
-    explicit engine(const Sys& sys) : detail::tableau_engine<Sys, T>(sys, to_scalar<T>(nystrom_form_of(Provider::tableau()))) {}
+    explicit engine(const Sys& sys) : detail::tableau_engine<Sys, T>(sys, form()) {}
+    /// The Nystrom form in T: of `Provider::numeric_tableau<T>()` where the provider computes
+    /// its coefficients in T itself (methods/collocation_algebra.hpp), else of the exact tableau.
+    static nystrom_form<T> form() {
+      if constexpr (requires { Provider::template numeric_tableau<T>(); })
+        return nystrom_form_of(Provider::template numeric_tableau<T>());
+      else
+        return to_scalar<T>(nystrom_form_of(Provider::tableau()));
+    }
   };
 };
 
