@@ -55,11 +55,12 @@ geomint_cli_test(geomint_cli_scheme_catalogue_print zero
 geomint_cli_test(geomint_cli_scheme_catalogue_print_algebra zero
                  "not a tableau file.kind rk, 5 stages, name radau-iia-5.stages: the roots of N.x. = 1 x.5 [+] .-25/9. x.4.*decimal tableau .30 digits.*c_5 = 1.  a: [-0-9. ]* 0[.]04.  b = 0[.]04"
                  $<TARGET_FILE:geomint-scheme> --print-tableau --scheme radau-iia-5)
+# Each also runs by name and from its file in geomint-run, with the same rows.
 # (The IIIA-IIIB pairs are left out: their P-series analysis to order 8 takes 15 s in the test
 # build; tests/methods/test_catalogue.cpp checks them.)
 foreach(_name gauss-3 radau-ia-3 forest-ruth demp-rkn43 nystrom-4)
   add_test(NAME geomint_cli_scheme_catalogue_round_trip_${_name}
-           COMMAND ${CMAKE_COMMAND} -DSCHEME=$<TARGET_FILE:geomint-scheme> -DNAME=${_name}
+           COMMAND ${CMAKE_COMMAND} -DSCHEME=$<TARGET_FILE:geomint-scheme> -DRUN=$<TARGET_FILE:geomint-run> -DNAME=${_name}
                    -DFILE=${CMAKE_CURRENT_BINARY_DIR}/catalogue_${_name}.tableau -P ${CMAKE_CURRENT_SOURCE_DIR}/catalogue_round_trip.cmake)
 endforeach()
 geomint_cli_test(geomint_cli_scheme_catalogue_list zero "name,kind,stages,order,title,source.gauss-2,rk,2,4,.*nystrom-4,nystrom,4,4,"
@@ -75,3 +76,21 @@ geomint_cli_test(geomint_cli_scheme_catalogue_unknown 2 "--scheme must be one of
                  $<TARGET_FILE:geomint-scheme> --analyse --scheme gauss-9)
 geomint_cli_test(geomint_cli_scheme_catalogue_list_alone 2 "--list-methods takes no other option.*usage: geomint-scheme"
                  $<TARGET_FILE:geomint-scheme> --list-methods --scheme gauss-3)
+# geomint-run --scheme NAME: Radau IIA, s = 5 (no tableau file: the coefficients in 50 digits from
+# its stage algebra) on Kepler (a = 1, e = 1/2, from pericentre) against the exact state at
+# t = 100 from Kepler's equation (tests/cli/CMakeLists.txt, the m = 9..16 tests: q =
+# (0.0958041308370718831386459947510410149, -0.6955307888642392780075247350316649624),
+# p = (1.1438999273507987907512255545384113573, 0.7349138739344099641379528529514756352)),
+# to the digits its error at this step allows (order 9).
+geomint_cli_test(geomint_cli_run_catalogue_radau_kepler zero
+                 "scheme radau-iia-5 .rk, 5 stages.*q = 0[.]0958041[0-9]* -0[.]6955307[0-9]*.p = 1[.]1438999[0-9]* 0[.]7349138"
+                 $<TARGET_FILE:geomint-run> --system kepler --scheme radau-iia-5 --tau 0.05 --steps 2000 --digits 50)
+# Usage errors: the options of the built-in schemes, --tableau, a constrained system.
+geomint_cli_test(geomint_cli_run_catalogue_m 2 "--m, --nodes and --basis apply to the built-in schemes, not to --scheme gauss-3 .a method of the catalogue.*usage: geomint-run"
+                 $<TARGET_FILE:geomint-run> --scheme gauss-3 --m 3)
+geomint_cli_test(geomint_cli_run_catalogue_tableau 2 "--scheme and --tableau exclude each other.*usage: geomint-run"
+                 $<TARGET_FILE:geomint-run> --scheme gauss-3 --tableau ${PROJECT_SOURCE_DIR}/examples/tableaux/gauss2.tableau)
+geomint_cli_test(geomint_cli_run_catalogue_constrained 2 "--scheme gauss-3 .a method of the catalogue. runs on the free systems only, not on the constrained system circle.*usage: geomint-run"
+                 $<TARGET_FILE:geomint-run> --scheme gauss-3 --system circle)
+geomint_cli_test(geomint_cli_run_catalogue_unknown 2 "--scheme must be one of lpf, .* or a method of the catalogue .geomint-scheme --list-methods.; got 'gauss-9'.*usage: geomint-run"
+                 $<TARGET_FILE:geomint-run> --scheme gauss-9)

@@ -20,6 +20,7 @@
 #include "geomint/analysis/symplecticity.hpp"
 #include "geomint/methods/catalogue.hpp"
 #include "geomint/methods/collocation_algebra.hpp"
+#include "geomint/core/nodes.hpp"
 #include "geomint/methods/tableau_method.hpp"
 #include "geomint/mechanics/systems.hpp"
 #include "geomint/methods/tableau_stepper.hpp"
@@ -148,7 +149,7 @@ TEST_CASE("collocation algebra: the numeric Radau tableaux of s = 5 in 50 digits
   const T50 tolerance = T50(1000) * std::numeric_limits<T50>::epsilon();
   const bs::tree_set trees(9, 1);
   auto check = [&](const auto& numeric, const rk_stage_algebra& exact) {
-    const auto phi = bs::elementary_weights(trees, methods::data_of(numeric));
+    const auto phi = bs::elementary_weights(trees, numeric);
     const auto phi_exact = bs::elementary_weights(trees, exact);
     for (std::size_t t = 0; t < phi.size(); ++t) {
       const T50 e = methods::rational_to<T50>(phi_exact[t].rational_value());
@@ -158,6 +159,16 @@ TEST_CASE("collocation algebra: the numeric Radau tableaux of s = 5 in 50 digits
   };
   check(methods::radau_iia<5>::numeric_tableau<T50>(), methods::radau_iia_algebra(5));
   check(methods::radau_ia<5>::numeric_tableau<T50>(), methods::radau_ia_algebra(5));
+  // The nodes, from their exact brackets, against core/nodes.hpp's (sign-change scan and Newton on
+  // the Legendre recurrence in T50): radau_right is 0 and the Radau IIA points, radau_left the
+  // Radau IA points and 1.
+  const auto right = nodes<radau_right, 5, T50>(), left = nodes<radau_left, 5, T50>();
+  const auto iia = methods::radau_iia<5>::numeric_tableau<T50>(), ia = methods::radau_ia<5>::numeric_tableau<T50>();
+  for (std::size_t i = 0; i < 5; ++i) {
+    using std::abs;
+    CHECK(abs(iia.c[i] - right[i + 1]) <= tolerance);
+    CHECK(abs(ia.c[i] - left[i]) <= tolerance);
+  }
 }
 
 TEST_CASE("collocation algebra: the step of Radau s = 5 has a symplecticity defect far above the noise", "[methods]") {

@@ -549,8 +549,7 @@ int print_catalogue_algebra(const methods::catalogue_entry& e) {
   }
   std::cout << "b:";
   for (const auto& x : m.b) std::cout << " " << x.str();
-  const auto n = e.name == "radau-iia-5" ? methods::radau_iia_numeric<5>::numeric_tableau<decimal>()
-                                         : methods::radau_ia_numeric<5>::numeric_tableau<decimal>();
+  const methods::tableau_data<decimal> n = methods::numeric_tableau<decimal>(m);
   std::cout << "\ndecimal tableau (30 digits; nodes from core/nodes.hpp)\n";
   for (std::size_t i = 0; i < static_cast<std::size_t>(s); ++i) {
     std::cout << "c_" << i + 1 << " = " << digits30(n.c[i]) << "\n  a:";

@@ -20,7 +20,7 @@ std::string system_choices() {
 
 const std::string usage =
     "usage: geomint-run [--system " + system_choices() + "]\n" +
-    "                   [--scheme " + geomint::core::detail::joined(geomint::cli::scheme_list()) + "|paper23 | --tableau FILE]\n" +
+    "                   [--scheme " + geomint::core::detail::joined(geomint::cli::scheme_list()) + "|paper23 | --scheme NAME | --tableau FILE]\n" +
     "                   [--nodes " + geomint::core::detail::joined(geomint::node_family_names) + " (or gauss_lobatto, ...)]\n" +
     "                   [--basis lagrange|bernstein]\n"
     "                   [--m M (2..16)] [--tau T (> 0)] [--steps N (0..10^12)] [--every K (1..10^12)]\n"
@@ -53,6 +53,9 @@ const std::string usage =
     "a field Q(r); docs/guide/tableau_files.md), in the --digits chosen; it excludes --scheme,\n"
     "--nodes, --basis and --m, and rkn and prk tableaux need a natural system (not charged). A\n"
     "malformed file is a usage error naming the file and line.\n"
+    "--scheme NAME integrates a free system with a method of the catalogue (geomint-scheme\n"
+    "--list-methods: gauss-3, radau-iia-5, lobatto-iiia-iiib-4, forest-ruth, demp-rkn64, ...), its\n"
+    "coefficients at the full precision of the --digits chosen, under the same rules as --tableau.\n"
     "--compensated adds the increments of q and p with compensated summation (on circle and\n"
     "spherical those of q: the momentum is projected onto the constraint at every step).\n"
     "--growth fits the growth of the energy error (free systems; to stderr with --csv): the RMS\n"
@@ -61,7 +64,7 @@ const std::string usage =
     "law; 1: linear).\n"
     "--estimate runs the same steps at tau/2 alongside and prints Richardson's estimate of the\n"
     "global error, |z(tau) - z(tau/2)|_inf 2^p/(2^p - 1) with p a lower bound of the scheme's\n"
-    "order (free systems; a CSV column error_estimate, the summary to stderr with --csv), and\n"
+    "order (a catalogue method's published order; free systems; a CSV column error_estimate, the summary to stderr with --csv), and\n"
     "'coarse run' when it exceeds 1/100 of max(|q|, |p|).\n"
     "Work: N steps, 3N with --estimate (N <= 10^12); the run stops at its first failed step or\n"
     "failed write.\n"

@@ -370,7 +370,7 @@ row<T> run_case(List list, const options& o, const method_series& m, const T& ta
   constexpr int n = Sys::dof;
   const auto stepper = o.scheme.empty()
                            ? make_tableau_stepper<T>(list, o.system,
-                                                          methods::nystrom_form_of(methods::read_tableau_file(o.tableau)))
+                                                     methods::to_scalar<T>(methods::nystrom_form_of(methods::read_tableau_file(o.tableau))))
                            : make_stepper<T>(list, o.system, spec_of(o));
   if (o.monitor) stepper->set_monitor(step_monitor<T>::on());
   dynamic_vector<T> q, p, q1, p1;

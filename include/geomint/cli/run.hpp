@@ -24,6 +24,7 @@
 #include "geomint/cli/parser.hpp"
 #include "geomint/cli/progress.hpp"
 #include "geomint/cli/steppers.hpp"
+#include "geomint/methods/catalogue.hpp"
 #include "geomint/methods/nystrom_form.hpp"
 #include "geomint/methods/tableau_file.hpp"
 
@@ -35,6 +36,7 @@ struct run_options {
   std::string system;                   ///< empty: the list's first system
   std::string scheme = "lpf";
   std::string tableau;  ///< --tableau FILE: the method of a tableau file instead of a built-in scheme
+  std::string method;   ///< --scheme NAME of a method of the catalogue (methods/catalogue.hpp), or empty
   std::string nodes = "equispaced";
   std::string basis = "lagrange";
   int m = 2;
@@ -141,11 +143,17 @@ int run_free_system(List list, const run_options& o) {
   spec.nodes = o.nodes;
   spec.basis = o.basis;
   spec.m = o.m;
-  // --tableau FILE: the method of the file (a malformed file is a tableau_file_error naming its
-  // line, an std::invalid_argument: a usage error).
-  const auto stepper = o.tableau.empty()
-                           ? make_stepper<T>(list, o.system, spec)
-                           : make_tableau_stepper<T>(list, o.system, methods::nystrom_form_of(methods::read_tableau_file(o.tableau)));
+  // --scheme NAME of the catalogue: its coefficients in T (methods::numeric_form); --tableau
+  // FILE: the method of the file (a malformed file is a tableau_file_error naming its line, an
+  // std::invalid_argument: a usage error).
+  const methods::catalogue_entry* method = o.method.empty() ? nullptr : methods::find_in_catalogue(o.method);
+  const auto stepper =
+      method ? make_tableau_stepper<T>(list, o.system, methods::numeric_form<T>(*method))
+      : o.tableau.empty()
+          ? make_stepper<T>(list, o.system, spec)
+          : make_tableau_stepper<T>(list, o.system, methods::to_scalar<T>(methods::nystrom_form_of(methods::read_tableau_file(o.tableau))));
+  // Richardson's order: a catalogue method's published order, else the scheme's lower bound.
+  const int order = method ? method->order : order_lower_bound(spec);
   stepper->set_monitor(run_monitor<T>(o));
   const int n = stepper->dof();
   const T tau = parse_scalar<T>(o.tau);
@@ -153,7 +161,7 @@ int run_free_system(List list, const run_options& o) {
   dynamic_vector<T> q, p;
   std::tie(q, p) = initial_data<T>(list, o, *stepper);
   std::optional<error_estimate<T>> estimate;
-  if (o.estimate) estimate.emplace(q, p, order_lower_bound(spec));
+  if (o.estimate) estimate.emplace(q, p, order);
   long step = 0;
   T t(0);
   std::cout << std::setprecision(std::numeric_limits<T>::max_digits10);
@@ -237,7 +245,7 @@ int run_free_system(List list, const run_options& o) {
     std::ostream& out = o.csv ? std::cerr : std::cout;  // keeps a CSV clean
     out << std::setprecision(3) << "estimated global error at t = " << static_cast<double>(t) << ": "
         << static_cast<double>(final_estimate) << " (max over the run " << static_cast<double>(max_estimate)
-        << "; Richardson, tau against tau/2, order >= " << order_lower_bound(spec) << ")\n";
+        << "; Richardson, tau against tau/2, order " << (method ? "" : ">= ") << order << ")\n";
     if (final_estimate > size / T(100) || max_estimate > size / T(100))
       out << "coarse run: the estimated error is " << static_cast<double>(T(max_estimate / size)) * 100
           << "% of the solution's size max(|q|, |p|) = " << static_cast<double>(size) << "; reduce --tau\n";
@@ -263,7 +271,7 @@ struct run_tool {
 inline std::string run_usage(const std::string& program, const std::vector<std::string>& names) {
   const std::string pad(program.size() + 8, ' ');
   return "usage: " + program + " [--system " + comma_list(names) + "]\n" + pad +
-         "[--scheme " + scheme_choices() + " | --tableau FILE]\n" + pad +
+         "[--scheme " + scheme_choices() + " | --scheme NAME | --tableau FILE]\n" + pad +
          "[--nodes " + core::detail::joined(node_family_names) + "] [--basis lagrange|bernstein]\n" + pad +
          "[--m M (2..16)] [--tau T (> 0)] [--steps N (0..10^12)] [--every K (1..10^12)]\n" + pad +
          "[--q0 a[,b...]] [--p0 a[,b...]] [--digits 16|50|100] [--csv]\n" + pad +
@@ -276,8 +284,9 @@ inline std::string run_usage(const std::string& program, const std::vector<std::
          "gauss-interior --basis lagrange, lpf-fixed-point and galerkin, in 16 and 50 digits.\n"
          "lpf --nodes gauss-interior --basis lagrange takes the fixed-point form's steps on a natural system;\n"
          "lpf-fixed-point (kept for one release) is that form alone and needs a natural system.\n"
-         "--tableau FILE integrates with the method written in FILE\n"
-         "(docs/guide/tableau_files.md). --compensated: compensated summation; --growth: the growth of the\n"
+         "--scheme NAME integrates with a method of the catalogue (geomint-scheme --list-methods: gauss-3,\n"
+         "radau-iia-5, forest-ruth, ...), --tableau FILE with the method written in FILE\n"
+         "(docs/guide/tableau_files.md), both at the scalar's full precision. --compensated: compensated summation; --growth: the growth of the\n"
          "energy error; --estimate: Richardson's estimate of the global error (a run at tau/2). The step\n"
          "monitor refuses steps that do not resolve the motion (exit status 3; --no-monitor turns it off).\n"
          "The options are those of geomint-run (docs/guide/your_own_tools.md).\n";
@@ -302,8 +311,15 @@ int run_main(List list, int argc, const char* const* argv, const run_tool& tool 
   parser cl(tool.program, tool.usage.empty() ? run_usage(tool.program, system_names(list)) : tool.usage);
   cl.value("--system", [&](const std::string& v) { o.system = parse_choice("--system", v, systems); })
       .value("--scheme", [&](const std::string& v) {
-        o.scheme = parse_choice("--scheme", v, schemes);
         scheme_given = true;
+        if (methods::find_in_catalogue(v)) {
+          o.method = v;
+          return;
+        }
+        if (std::find(schemes.begin(), schemes.end(), v) == schemes.end())
+          throw usage_error("--scheme must be one of " + comma_list(schemes) +
+                            " or a method of the catalogue (geomint-scheme --list-methods); got " + in_quotes(v));
+        o.scheme = v;
       })
       .value("--tableau", [&](const std::string& v) { o.tableau = v; })
       .value("--nodes", [&](const std::string& v) {
@@ -330,6 +346,13 @@ int run_main(List list, int argc, const char* const* argv, const run_tool& tool 
       .toggle("--growth", [&] { o.growth = true; })
       .toggle("--estimate", [&] { o.estimate = true; });
   if (const auto done = cl.parse(argc, argv)) return *done;
+  if (!o.method.empty()) {
+    if (!o.tableau.empty()) return cl.fail("--scheme and --tableau exclude each other");
+    if (m_given || nodes_or_basis_given)
+      return cl.fail("--m, --nodes and --basis apply to the built-in schemes, not to --scheme " + o.method + " (a method of the catalogue)");
+    if (is_extra_system(o.system))
+      return cl.fail("--scheme " + o.method + " (a method of the catalogue) runs on the free systems only, not on the constrained system " + o.system);
+  }
   if (!o.tableau.empty()) {
     if (scheme_given) return cl.fail("--scheme and --tableau exclude each other");
     if (m_given || nodes_or_basis_given) return cl.fail("--m, --nodes and --basis apply to the built-in schemes, not to --tableau");

@@ -54,7 +54,7 @@ std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec);
 template <class Sys, class T>
 std::unique_ptr<any_stepper<T>> make_high_m_stepper(const scheme_spec& spec);
 template <class Sys, class T>
-std::unique_ptr<any_stepper<T>> make_system_tableau_stepper(const methods::nystrom_form<methods::field_element>& form);
+std::unique_ptr<any_stepper<T>> make_system_tableau_stepper(const methods::nystrom_form<T>& form);
 
 /// Throws std::invalid_argument for lpf-fixed-point on a system that is not natural (the
 /// library's factory says so for m <= 8, make_high_m_stepper for m > 8 with this).

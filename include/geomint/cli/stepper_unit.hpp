@@ -39,7 +39,7 @@ std::unique_ptr<any_stepper<T>> make_system_stepper(const scheme_spec& spec) {
 }
 
 template <class Sys, class T>
-std::unique_ptr<any_stepper<T>> make_system_tableau_stepper(const methods::nystrom_form<methods::field_element>& form) {
+std::unique_ptr<any_stepper<T>> make_system_tableau_stepper(const methods::nystrom_form<T>& form) {
 #if GEOMINT_CLI_STEPPER_STUB
   (void)form;
   detail::stepper_not_compiled<T>();

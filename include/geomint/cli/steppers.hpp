@@ -67,11 +67,12 @@ std::unique_ptr<any_stepper<T>> make_stepper(List list, std::string_view system,
   });
 }
 
-/// The stepper of a method given as data (a tableau file's Nystrom form) on the system called
-/// `system` (std::invalid_argument for an rkn or prk tableau on a system that is not natural).
+/// The stepper of a method given as data (a tableau file's or a catalogue method's Nystrom form,
+/// in T) on the system called `system` (std::invalid_argument for an rkn or prk tableau on a
+/// system that is not natural).
 template <class T, class List>
 std::unique_ptr<any_stepper<T>> make_tableau_stepper(List list, std::string_view system,
-                                                     const methods::nystrom_form<methods::field_element>& form) {
+                                                     const methods::nystrom_form<T>& form) {
   return with_system(list, system, [&]<class Sys>() { return make_system_tableau_stepper<Sys, T>(form); });
 }
 

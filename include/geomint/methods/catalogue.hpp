@@ -393,6 +393,13 @@ inline const std::vector<catalogue_entry>& catalogue() {
   return entries;
 }
 
+/// The Nystrom form of an entry in T, every coefficient at T's full precision: its exact tableau
+/// converted, or the numeric tableau of its stage algebra (methods/collocation_algebra.hpp).
+template <class T>
+nystrom_form<T> numeric_form(const catalogue_entry& e) {
+  return e.tableau ? to_scalar<T>(nystrom_form_of(e.tableau())) : nystrom_form_of(numeric_tableau<T>(e.algebra()));
+}
+
 /// The entry called `name`, or nullptr.
 inline const catalogue_entry* find_in_catalogue(std::string_view name) {
   for (const catalogue_entry& e : catalogue())

@@ -16,8 +16,8 @@
 ///   of collocation (collocation_families.hpp): Ahat = 1 b^T - W^(-1) A^T W, in the monomial basis
 ///   e_0 b^T - G^(-1) A^T G with the Gram matrix G = V^T W V, G_kl = b(x^(k+l) mod N).
 /// Every coordinate is rational although the nodes are not; analysis/collocation_algebra_analysis.hpp
-/// analyses such a method exactly, and `numeric_tableau<T>()` of the providers below gives the
-/// usual (c, A, b) in a scalar T from the nodes in T (core/nodes.hpp) without a Vandermonde solve.
+/// analyses such a method exactly, and `numeric_tableau<T>(m)` gives the usual (c, A, b) in a
+/// scalar T from the nodes in T without a Vandermonde solve.
 
 #include <array>
 #include <cstddef>
@@ -27,7 +27,6 @@
 #include <utility>
 #include <vector>
 
-#include "geomint/core/nodes.hpp"
 #include "geomint/methods/collocation_families.hpp"
 #include "geomint/methods/collocation_rkn.hpp"
 #include "geomint/methods/number_field.hpp"
@@ -44,6 +43,9 @@ struct rk_stage_algebra {
   vector node_polynomial;  ///< monic N, ascending (stages + 1 coefficients)
   matrix a;                ///< the operator A on coordinates: (A u)_k = sum_l a[k][l] u_l
   vector b;                ///< the functional b: b(u) = sum_k b[k] u_k
+  /// How the operators were made (numeric_tableau computes the same in T): collocation on the
+  /// roots of N, or its symplectic complement (the D(s) method on those nodes).
+  bool complement = false;
 
   /// The basis vector x^k (k < stages).
   vector unit(int k) const {
@@ -140,8 +142,10 @@ inline rk_stage_algebra symplectic_complement(const rk_stage_algebra& m, std::st
   for (std::size_t i = 0; i < s; ++i)
     for (std::size_t j = 0; j < s; ++j)
       for (std::size_t k = 0; k < s; ++k) at_g[i][j] += m.a[k][i] * g[k][j];
+  if (m.complement) throw std::invalid_argument("geomint::methods::symplectic_complement: the method is a complement already");
   rk_stage_algebra out = m;
   out.name = std::move(name);
+  out.complement = true;
   for (std::size_t j = 0; j < s; ++j) {  // column j of G^(-1) A^T G
     rk_stage_algebra::vector column(s);
     for (std::size_t i = 0; i < s; ++i) column[i] = at_g[i][j];
@@ -192,33 +196,54 @@ rk<T, S> symplectic_complement(const rk<T, S>& m) {
   return t;
 }
 
+namespace detail {
+/// f.template operator()<S>() for the run-time s in 1..8.
+template <int S = 1, class F>
+decltype(auto) with_stage_count(int s, F&& f) {
+  if constexpr (S < 8) {
+    if (s != S) return with_stage_count<S + 1>(s, std::forward<F>(f));
+  }
+  if (s != S) throw std::invalid_argument("geomint::methods: a method over its stage algebra has 1..8 stages");
+  return f.template operator()<S>();
+}
+}  // namespace detail
+
+/// The method in the scalar T: its nodes, the roots of N, each to T's full precision from its
+/// exact bracket (algebraic_field::root_in), then collocation_rk and, for a complement,
+/// symplectic_complement in T: no Vandermonde solve, every entry to a few ulps of T.
+template <class T>
+tableau_data<T> numeric_tableau(const rk_stage_algebra& m) {
+  const auto brackets = algebraic_field::real_root_brackets(m.node_polynomial);
+  if (static_cast<int>(brackets.size()) != m.stages)
+    throw std::invalid_argument("geomint::methods::numeric_tableau: N must have " + std::to_string(m.stages) + " real roots");
+  std::vector<T> c;
+  for (const auto& [a, b] : brackets)
+    c.push_back(a == b ? rational_to<T>(a) : algebraic_field::make(m.node_polynomial, exact_rational((a + b) / 2))->template root_in<T>());
+  tableau_data<T> out = detail::with_stage_count(m.stages, [&]<int S>() {
+    stage_vector<T, S> nodes;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) nodes[i] = c[i];
+    const rk<T, S> collocation = collocation_rk<T, S>(nodes);
+    return data_of(m.complement ? symplectic_complement<T, S>(collocation) : collocation);
+  });
+  out.name = m.name;
+  return out;
+}
+
 /// Radau IIA and Radau IA with S stages as schemes of the one integrator
-/// (integrator<tableau_method<radau_iia_numeric<5>>, Sys, T>, methods/tableau_method.hpp):
-/// `numeric_tableau<T>()` from the Radau nodes in T (core/nodes.hpp), `algebra()` the exact
-/// method the analysis takes.
+/// (integrator<tableau_method<radau_iia<5>>, Sys, T>, methods/tableau_method.hpp): `algebra()`
+/// the exact method the analysis takes, `numeric_tableau<T>()` the same in T.
 template <int S, bool Right>
 struct radau_numeric {
   static_assert(S >= 1 && S <= 8, "geomint::methods::radau_numeric: S must be 1..8");
   static std::string name() { return (Right ? "radau-iia-" : "radau-ia-") + std::to_string(S); }
   static rk_stage_algebra algebra() { return Right ? radau_iia_algebra(S) : radau_ia_algebra(S); }
   template <class T>
-  static rk<T, S> numeric_tableau() {
-    // nodes<radau_right, S>: 0 and the S Radau IIA points; nodes<radau_left, S>: the S Radau IA
-    // points and 1.
-    const auto all = Right ? nodes<radau_right, S, T>() : nodes<radau_left, S, T>();
-    stage_vector<T, S> c;
-    for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) c[i] = all[i + (Right ? 1 : 0)];
-    const rk<T, S> collocation = collocation_rk<T, S>(c);
-    return Right ? collocation : symplectic_complement<T, S>(collocation);
+  static tableau_data<T> numeric_tableau() {
+    return methods::numeric_tableau<T>(algebra());
   }
   /// The type the integrator reads the kind from (never evaluated).
   static rk<exact_rational, S> tableau();
 };
-template <int S>
-using radau_iia_numeric = radau_numeric<S, true>;
-template <int S>
-using radau_ia_numeric = radau_numeric<S, false>;
-
 /// Radau IIA and IA with S stages as schemes: s = 2..4 from their exact tableaux
 /// (collocation_families.hpp), s >= 5 from radau_numeric.
 template <int S>

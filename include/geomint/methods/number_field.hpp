@@ -223,17 +223,16 @@ class algebraic_field {
     return abs(value(a)) <= abs(value(b)) ? a : b;
   }
 
- private:
-  algebraic_field() = default;
-
-  /// Isolates every real root (Sturm counts, bisection from the Cauchy bound), narrows each to a
-  /// width below 2^-64 of the bound, and keeps the one nearest `near` (or the largest).
-  void isolate(const std::optional<exact_rational>& near) {
+  /// The real roots of the square-free P, ascending, each in an exact bracket [a, b] that holds
+  /// no other root (a = b for a rational root), narrower than 2^-64 of the Cauchy bound
+  /// (`width`, if given, receives that width).
+  static std::vector<std::pair<exact_rational, exact_rational>> real_root_brackets(const std::vector<exact_rational>& p,
+                                                                                   exact_rational* width_out = nullptr) {
     using detail::sign_changes;
-    const auto s = detail::sturm_sequence(p_);
+    const auto s = detail::sturm_sequence(p);
     exact_rational bound = 0;
-    for (std::size_t i = 0; i + 1 < p_.size(); ++i) {
-      const exact_rational a = boost::multiprecision::abs(p_[i] / p_.back());
+    for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+      const exact_rational a = boost::multiprecision::abs(p[i] / p.back());
       if (a > bound) bound = a;
     }
     bound += 1;
@@ -252,27 +251,40 @@ class algebraic_field {
       work.emplace_back(a, mid);
       work.emplace_back(mid, b);
     }
-    if (roots.empty()) throw std::invalid_argument("the field polynomial has no real root");
     const exact_rational width = bound / exact_rational(boost::multiprecision::cpp_int(1) << 64);
+    if (width_out) *width_out = width;
     for (auto& [a, b] : roots) {
       // One root in (a, b]: narrow by the sign of P (simple root, so a sign change).
-      if (detail::evaluate(p_, b) == 0) {
+      if (detail::evaluate(p, b) == 0) {
         a = b;
         continue;
       }
       while (b - a > width) {
         const exact_rational mid = (a + b) / 2;
-        const int sm = detail::sign(detail::evaluate(p_, mid));
+        const int sm = detail::sign(detail::evaluate(p, mid));
         if (sm == 0) {
           a = b = mid;
           break;
         }
-        if (sm == detail::sign(detail::evaluate(p_, b)))
+        if (sm == detail::sign(detail::evaluate(p, b)))
           b = mid;
         else
           a = mid;
       }
     }
+    std::sort(roots.begin(), roots.end());
+    return roots;
+  }
+
+ private:
+  algebraic_field() = default;
+
+  /// Isolates every real root (Sturm counts, bisection from the Cauchy bound), narrows each to a
+  /// width below 2^-64 of the bound, and keeps the one nearest `near` (or the largest).
+  void isolate(const std::optional<exact_rational>& near) {
+    exact_rational width;
+    const auto roots = real_root_brackets(p_, &width);
+    if (roots.empty()) throw std::invalid_argument("the field polynomial has no real root");
     std::size_t best = 0;
     bool tie = false;
     for (std::size_t i = 1; i < roots.size(); ++i) {
