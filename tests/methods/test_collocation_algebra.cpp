@@ -186,6 +186,34 @@ TEST_CASE("collocation algebra: the step of Radau s = 5 has a symplecticity defe
   }
 }
 
+TEST_CASE("collocation algebra: the catalogue's Gauss s = 4, 5 and Radau s = 4 are their field tableaux", "[methods]") {
+  // The catalogue analyses these over the stage algebra and runs their tableaux over fields of
+  // degree 8 and 6 (collocation_families.hpp): the same method, by the weights to order 5 (the
+  // field's series cost milliseconds per tree) and by R(z) (rational for these methods). Gauss has order 2s (Butcher 1964),
+  // decided with the rooted trees to 2s + 1.
+  for (const char* name : {"gauss-4", "gauss-5", "radau-iia-4", "radau-ia-4"}) {
+    INFO(name);
+    const methods::catalogue_entry* e = methods::find_in_catalogue(name);
+    REQUIRE(e);
+    REQUIRE(static_cast<bool>(e->algebra));
+    REQUIRE(static_cast<bool>(e->tableau));
+    const rk_stage_algebra m = e->algebra();
+    const auto t = e->tableau();
+    const bs::tree_set trees(5, 1);
+    CHECK(bs::elementary_weights(trees, m) == bs::elementary_weights(trees, t));
+    const auto va = analysis::verdicts(m);
+    const auto vt = rk_stability(t);
+    REQUIRE(va.has_rk);
+    CHECK(va.rk.numerator == vt.numerator);
+    CHECK(va.rk.denominator == vt.denominator);
+    const auto r = bs::analyse_method(m);
+    CHECK(r.order == e->order);
+    CHECK_FALSE(r.order_is_lower_bound);
+    CHECK(r.symplectic == e->symplectic);
+    CHECK(va.symmetric == e->symmetric);
+  }
+}
+
 TEST_CASE("collocation algebra: the catalogue's Radau s = 5 entries are these methods", "[methods]") {
   for (const char* name : {"radau-iia-5", "radau-ia-5"}) {
     const methods::catalogue_entry* e = methods::find_in_catalogue(name);

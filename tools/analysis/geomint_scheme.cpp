@@ -94,9 +94,11 @@ const std::string usage_text =
     "              or NAME, a method of the catalogue from the literature (gauss-3, radau-iia-3,\n"
     "              lobatto-iiia-iiib-4, forest-ruth, demp-rkn64, ...): with --analyse the same\n"
     "              analysis and CSV as --tableau FILE; with --print-tableau its exact tableau as a\n"
-    "              tableau file (radau-iia-5, radau-ia-5: their entries lie in a field of degree\n"
-    "              24; analysed over Q[x]/(N), printed as its operators and a 30-digit tableau;\n"
-    "              --m and --nodes do not apply)\n"
+    "              tableau file (--m and --nodes do not apply). gauss-4, gauss-5, radau-iia-4,\n"
+    "              radau-ia-4 (entries in fields of degree 8 and 6) are analysed over their stage\n"
+    "              algebra Q[x]/(N), with rooted trees to max(10, 2s + 1); radau-iia-5, radau-ia-5\n"
+    "              too, and, their entries lying in a field of degree 24, --print-tableau prints\n"
+    "              their operators on Q[x]/(N) and a 30-digit tableau\n"
     "  --list-methods  the catalogue: name, kind, stages, published order, title, source (CSV)\n"
     "  --nodes F   equispaced (default), gauss-interior, lobatto, chebyshev (also gauss_interior,\n"
     "              gauss-lobatto, chebyshev-lobatto, ...), a comma list, or all (lpf only)\n"
@@ -342,7 +344,8 @@ method_report report_of(const methods::tableau_data<methods::field_element>& t) 
   return m;
 }
 
-/// A method over its stage algebra (Radau with s = 5: analysis/collocation_algebra_analysis.hpp).
+/// A method over its stage algebra (analysis/collocation_algebra_analysis.hpp: the catalogue's
+/// Gauss s = 4, 5 and Radau s = 4, 5).
 method_report report_of(const methods::rk_stage_algebra& a) {
   method_report m;
   m.r = analysis::bseries::analyse_method(a);
@@ -562,7 +565,7 @@ int print_catalogue_algebra(const methods::catalogue_entry& e) {
 /// --print-tableau --scheme NAME: the catalogue method as a tableau file (read back by
 /// --analyse --tableau and geomint-run --tableau).
 int print_catalogue_tableau(const methods::catalogue_entry& e) {
-  if (e.algebra) return print_catalogue_algebra(e);
+  if (!e.tableau) return print_catalogue_algebra(e);
   const methods::tableau_data<methods::field_element> t = e.tableau();
   std::shared_ptr<const methods::algebraic_field> field;
   auto note = [&](const std::vector<methods::field_element>& v) {

@@ -24,6 +24,7 @@
 ///   method_verdicts.hpp (`linear_equivalent_tableau`; its nonlinear order conditions are not
 ///   the method's, so it is used for the linear verdicts only).
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -192,11 +193,17 @@ inline std::vector<methods::field_element> elementary_weights(const tree_set& tr
   return phi;
 }
 
-/// Order (rooted trees up to `tree_order`) and symplecticity.
-inline method_analysis analyse_method(const rk_stage_algebra& m, int tree_order = default_order_one_colour) {
+/// Rooted trees analysed by default: to order 10, and to 2s + 1 (at most 14) for s >= 5, so that
+/// the order 2s of Gauss is decided (each tree costs one product modulo N, with rationals).
+inline int default_tree_order(const rk_stage_algebra& m) {
+  return std::min(max_tree_order_one_colour, std::max(default_order_one_colour, 2 * m.stages + 1));
+}
+
+/// Order (rooted trees up to `tree_order`, 0: default_tree_order) and symplecticity.
+inline method_analysis analyse_method(const rk_stage_algebra& m, int tree_order = 0) {
   method_analysis r;
   r.colours = 1;
-  r.tree_order = tree_order;
+  r.tree_order = tree_order > 0 ? tree_order : default_tree_order(m);
   const tree_set trees(r.tree_order, 1);
   detail::order_of(trees, local_error_coefficients(trees, elementary_weights(trees, m)), r);
   const stage_algebra_symplecticity conditions = symplecticity_conditions(m);

@@ -257,7 +257,9 @@ struct catalogue_entry {
   /// Exact, compositions as their rkn tableau; empty where the entries need too large a field
   /// (Radau with s = 5), which `algebra` gives instead.
   std::function<tableau_data<field_element>()> tableau;
-  std::function<rk_stage_algebra()> algebra;  ///< the rk method over its stage algebra, or empty
+  /// The rk method over its stage algebra, or empty: the analysis's model where present (Gauss
+  /// s = 4, 5 and Radau s = 4, whose fields have degree 8 and 6, and Radau s = 5).
+  std::function<rk_stage_algebra()> algebra;
 };
 
 namespace detail {
@@ -353,9 +355,16 @@ inline std::vector<catalogue_entry> make_catalogue() {
         e.source += "; reducible to the implicit midpoint rule (symplectic)";
       }
       const std::string name = e.name;
-      if ((f.id == collocation_family::radau_iia || f.id == collocation_family::radau_ia) && s == 5) {
+      // Over their stage algebra too, where the field of the entries has degree > 2 (Gauss s = 4,
+      // 5; Radau s = 4) or 24 (Radau s = 5: no tableau): the analysis's series there are rational.
+      const bool radau = f.id == collocation_family::radau_iia || f.id == collocation_family::radau_ia;
+      if (f.id == collocation_family::gauss && s >= 4)
+        e.algebra = [s, name] { return collocation_algebra(detail::monic(detail::shifted_legendre(s)), name); };
+      if (radau && s >= 4) {
         const bool right = f.id == collocation_family::radau_iia;
-        e.algebra = [right] { return right ? radau_iia_algebra(5) : radau_ia_algebra(5); };
+        e.algebra = [right, s] { return right ? radau_iia_algebra(s) : radau_ia_algebra(s); };
+      }
+      if (radau && s == 5) {
         out.push_back(std::move(e));
         continue;
       }
