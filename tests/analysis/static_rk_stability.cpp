@@ -24,6 +24,7 @@
 
 #include "geomint/analysis/method_verdicts.hpp"
 #include "geomint/analysis/rk_stability.hpp"
+#include "../pade.hpp"
 
 namespace {
 
@@ -32,17 +33,14 @@ using geomint::rational;
 using geomint::methods::make_rk;
 using R = rational;
 
-constexpr std::int64_t factorial(int n) { return n <= 1 ? 1 : n * factorial(n - 1); }
-
-/// R (unreduced, P(0) = Q(0) = 1) equals the Pade approximant R_kj of exp, coefficient by coefficient.
+/// R (unreduced, P(0) = Q(0) = 1) equals the Pade approximant R_kj of exp (tests/pade.hpp),
+/// coefficient by coefficient.
 template <class F>
 constexpr bool is_pade(const F& f, int k, int j) {
-  for (int i = 0; i < static_cast<int>(f.numerator.size()); ++i) {
-    const R p = i <= k ? R(factorial(k) * factorial(k + j - i), factorial(k + j) * factorial(i) * factorial(k - i)) : R(0);
-    const R q = i <= j ? R(factorial(j) * factorial(k + j - i) * (i % 2 ? -1 : 1), factorial(k + j) * factorial(i) * factorial(j - i))
-                       : R(0);
-    if (!(f.numerator[static_cast<std::size_t>(i)] == p) || !(f.denominator[static_cast<std::size_t>(i)] == q)) return false;
-  }
+  for (int i = 0; i < static_cast<int>(f.numerator.size()); ++i)
+    if (!(f.numerator[static_cast<std::size_t>(i)] == geomint::test::pade_numerator(k, j, i)) ||
+        !(f.denominator[static_cast<std::size_t>(i)] == geomint::test::pade_denominator(k, j, i)))
+      return false;
   return true;
 }
 

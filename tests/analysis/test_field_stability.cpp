@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "catch.hpp"
+#include "geomint/analysis/algebraic_stability.hpp"
 #include "geomint/analysis/method_verdicts.hpp"
 #include "geomint/methods/catalogue.hpp"
 #include "geomint/methods/tableau_file.hpp"
@@ -224,6 +225,42 @@ TEST_CASE("The field path agrees with the rational path on rational methods", "[
     }
   }
   CHECK(field_linear_stability(catalogue_tableau("stormer-verlet")).interval.compare_squared(exact_number(4)) == 0);
+}
+
+/// The constexpr analysis over algebraic_number (algebraic_stability.hpp), run at run time on a
+/// typed method, against the field path on the catalogue's run-time tableau.
+template <class Method>
+void check_algebraic_path(const char* name) {
+  INFO(name);
+  const auto typed = [] {
+    if constexpr (requires { methods::tableau_of(Method::tableau()); }) return methods::tableau_of(Method::tableau()).tableau;
+    else return Method::tableau();
+  }();
+  const algebraic_linear_stability_result a = algebraic_linear_stability(typed);
+  const field_linear_stability_result f = field_linear_stability(catalogue_tableau(name));
+  CHECK(a.determinant_is_one == f.determinant_is_one);
+  CHECK(a.order == f.order);
+  CHECK(a.phase_lag_order == f.phase_lag_order);
+  CHECK(a.dissipation_order == f.dissipation_order);
+  REQUIRE(a.interval.empty == f.interval.empty);
+  REQUIRE(a.interval.unbounded == f.interval.unbounded);
+  if (!a.interval.empty && !a.interval.unbounded) {
+    const stability_interval x = a.interval.refined(100), y = f.interval.refined(100);
+    CHECK(y.compare_squared(x.low()) <= 0);
+    CHECK(y.compare_squared(x.high()) >= 0);
+    CHECK(x.compare_squared(y.low()) <= 0);
+    CHECK(x.compare_squared(y.high()) >= 0);
+  }
+}
+
+TEST_CASE("The constexpr path over algebraic_number agrees with the field path", "[field_stability]") {
+  // Two implementations of the same analysis (fixed-size constexpr types against run-time field
+  // elements); the values themselves are checked against the matrix products above and, for
+  // Forest-Ruth, against an 80-digit computation outside the library
+  // (static_algebraic_stability.cpp).
+  check_algebraic_path<methods::forest_ruth>("forest-ruth");
+  check_algebraic_path<methods::yoshida_triple_jump>("yoshida-triple-jump");
+  check_algebraic_path<methods::mclachlan_sb3a4>("mclachlan-sb3a-4");
 }
 
 methods::tableau_data<field_element> tableau_from(const std::string& text) {

@@ -18,6 +18,7 @@
 #include "geomint/analysis/method_verdicts.hpp"
 #include "geomint/analysis/rk_stability.hpp"
 #include "geomint/methods/tableau_file.hpp"
+#include "pade.hpp"
 
 // A named namespace: the suites of a folder are compiled as one unit (UNITY_BUILD).
 namespace rk_stability_test {
@@ -35,17 +36,16 @@ methods::tableau_data<field_element> tableau_from(const std::string& text) {
   return methods::read_tableau(in, "test");
 }
 
-exact_rational factorial(int n) { return n <= 1 ? exact_rational(1) : exact_rational(n) * factorial(n - 1); }
+exact_rational exact(const rational& x) { return exact_rational(x.num, x.den); }
 
-/// Whether R = P / Q (unreduced, P(0) = Q(0) = 1) is the Pade approximant R_kj of exp (HW II,
-/// section IV.3): P_kj = sum_{i<=k} k!(k+j-i)!/((k+j)! i! (k-i)!) z^i, Q_kj likewise in -z with j.
+/// Whether R = P / Q (unreduced, P(0) = Q(0) = 1) is the Pade approximant R_kj of exp
+/// (tests/pade.hpp).
 bool is_pade(const rational_function<std::vector<field_element>>& f, int k, int j) {
   for (std::size_t n = 0; n < f.numerator.size(); ++n) {
     const int i = static_cast<int>(n);
-    const exact_rational p = i <= k ? factorial(k) * factorial(k + j - i) / (factorial(k + j) * factorial(i) * factorial(k - i)) : 0;
-    const exact_rational q =
-        i <= j ? (i % 2 ? -1 : 1) * factorial(j) * factorial(k + j - i) / (factorial(k + j) * factorial(i) * factorial(j - i)) : 0;
-    if (!(f.numerator[n] == field_element(p)) || !(f.denominator[n] == field_element(q))) return false;
+    if (!(f.numerator[n] == field_element(exact(geomint::test::pade_numerator(k, j, i)))) ||
+        !(f.denominator[n] == field_element(exact(geomint::test::pade_denominator(k, j, i)))))
+      return false;
   }
   return true;
 }

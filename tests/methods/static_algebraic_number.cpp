@@ -18,6 +18,7 @@
 #include "geomint/analysis/rk_stability.hpp"
 #include "geomint/methods/algebraic_number.hpp"
 #include "geomint/methods/tableau.hpp"
+#include "../pade.hpp"
 
 namespace {
 
@@ -48,18 +49,15 @@ static_assert(x * x == Rd(2) && !(x == Rd(1)) && (Rd(1) / (x - Rd(1))) * (x - Rd
 static_assert(Rd(1) / (x - Rd(1)) == x + Rd(1));  // 1/(sqrt 2 - 1) = sqrt 2 + 1
 
 // ---- Pade approximants, the published stability functions (HW section IV.3) ----
-constexpr std::int64_t factorial(int n) { return n <= 1 ? 1 : n * factorial(n - 1); }
-/// R (unreduced, P(0) = Q(0) = 1) equals R_kj = P_kj / Q_kj coefficient by coefficient, with
-/// P_kj(z) = sum_{i<=k} k! (k+j-i)! / ((k+j)! i! (k-i)!) z^i and Q_kj(z) = P_jk(-z).
+/// R (unreduced, P(0) = Q(0) = 1) equals R_kj = P_kj / Q_kj (tests/pade.hpp) coefficient by
+/// coefficient.
 template <class F>
 constexpr bool is_pade(const F& f, int k, int j) {
   using K = std::remove_cvref_t<decltype(f.numerator[0])>;
-  for (int i = 0; i < static_cast<int>(f.numerator.size()); ++i) {
-    const rational p = i <= k ? rational(factorial(k) * factorial(k + j - i), factorial(k + j) * factorial(i) * factorial(k - i)) : rational(0);
-    const rational q = i <= j ? rational(factorial(j) * factorial(k + j - i) * (i % 2 ? -1 : 1), factorial(k + j) * factorial(i) * factorial(j - i))
-                              : rational(0);
-    if (!(f.numerator[static_cast<std::size_t>(i)] == K(p)) || !(f.denominator[static_cast<std::size_t>(i)] == K(q))) return false;
-  }
+  for (int i = 0; i < static_cast<int>(f.numerator.size()); ++i)
+    if (!(f.numerator[static_cast<std::size_t>(i)] == K(geomint::test::pade_numerator(k, j, i))) ||
+        !(f.denominator[static_cast<std::size_t>(i)] == K(geomint::test::pade_denominator(k, j, i))))
+      return false;
   return true;
 }
 

@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "catch.hpp"
+#include "pade.hpp"
 #include "geomint/analysis/collocation_algebra_analysis.hpp"
 #include "geomint/analysis/symplecticity.hpp"
 #include "geomint/methods/catalogue.hpp"
@@ -100,18 +101,12 @@ TEST_CASE("collocation algebra: Gauss s = 5 and 6 are symplectic and symmetric, 
   CHECK_FALSE(analysis::symplecticity_conditions(iiib).symplectic);  // IIIB alone is not (only the pair is)
 }
 
-/// The (k, j) Pade approximant of e^z: P = sum_i k! (j+k-i)! / ((j+k)! i! (k-i)!) z^i,
-/// Q = sum_i j! (j+k-i)! / ((j+k)! i! (j-i)!) (-z)^i (Hairer & Wanner II, section IV.3).
+/// The (k, j) Pade approximant of e^z (tests/pade.hpp) over exact rationals.
 std::pair<std::vector<exact_rational>, std::vector<exact_rational>> pade(int k, int j) {
-  auto factorial = [](int n) {
-    boost::multiprecision::cpp_int f = 1;
-    for (int i = 2; i <= n; ++i) f *= i;
-    return exact_rational(f);
-  };
+  auto exact = [](const rational& x) { return exact_rational(x.num, x.den); };
   std::vector<exact_rational> p, q;
-  for (int i = 0; i <= k; ++i) p.push_back(factorial(k) * factorial(j + k - i) / (factorial(j + k) * factorial(i) * factorial(k - i)));
-  for (int i = 0; i <= j; ++i)
-    q.push_back((i % 2 ? -1 : 1) * factorial(j) * factorial(j + k - i) / (factorial(j + k) * factorial(i) * factorial(j - i)));
+  for (int i = 0; i <= k; ++i) p.push_back(exact(test::pade_numerator(k, j, i)));
+  for (int i = 0; i <= j; ++i) q.push_back(exact(test::pade_denominator(k, j, i)));
   return {p, q};
 }
 
