@@ -1,5 +1,5 @@
 #pragma once
-/// Linear stability on y'' = -y of a fixed-size tableau over a constexpr Q(r)
+/// Linear stability on y'' = -y, and on y' = lambda y for rk, of a fixed-size tableau over a constexpr Q(r)
 /// (methods::algebraic_number<P>: Forest-Ruth and Yoshida over Q(2^(1/3)), McLachlan's SB3A over
 /// quadratic fields), in a constant expression: the analysis of field_stability.hpp, whose run-time
 /// field elements allocate, with the fixed-size types of linear_stability.hpp and
@@ -25,6 +25,7 @@
 
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/method_verdicts.hpp"
+#include "geomint/analysis/rk_stability.hpp"
 #include "geomint/analysis/stability_interval.hpp"
 #include "geomint/methods/algebraic_number.hpp"
 
@@ -238,7 +239,58 @@ constexpr stability_interval interval_of_conditions(stability_kind kind,
   return out;
 }
 
+/// |f(iy)|^2 as a polynomial in u = y^2.
+template <class K, int C>
+constexpr fixed_field_polynomial<K, C> squared_modulus_on_axis(const fixed_field_polynomial<K, C>& f) {
+  fixed_field_polynomial<K, C> reflected = f;
+  for (int k = 1; k <= f.degree; k += 2) reflected.c[k] = -f.c[k];
+  const fixed_field_polynomial<K, C> h = f * reflected;
+  fixed_field_polynomial<K, C> out;
+  for (int j = 0; 2 * j <= h.degree; ++j) out.c[j] = j % 2 == 0 ? h.c[2 * j] : -h.c[2 * j];
+  out.trim();
+  return out;
+}
+
 }  // namespace analysis::detail
+
+/// The verdicts of rk_stability_result on y' = lambda y over Q(r).
+struct algebraic_rk_stability_result {
+  bool bounded_on_imaginary_axis = false;
+  bool poles_in_right_half_plane = false;
+  bool a_stable = false;
+  bool l_stable = false;
+  stability_interval imaginary_axis{};  ///< [0, Y] with |R(iy)| <= 1; the bound is Y^2
+};
+
+/// R(z) = P / Q of an rk tableau over algebraic_number<P> in lowest terms, and the verdicts of
+/// rk_stability.hpp: the imaginary-axis interval from |Q(iy)|^2 - |P(iy)|^2 (its first sign
+/// change, as above), the poles by Routh's array with the exact signs of Q(r), A- and L-stability.
+template <auto Field, int S>
+constexpr algebraic_rk_stability_result algebraic_rk_stability(const methods::rk<methods::algebraic_number<Field>, S>& t) {
+  static_assert(S <= max_exact_stages, "geomint::algebraic_rk_stability: at most max_exact_stages (8) stages");
+  using K = methods::algebraic_number<Field>;
+  using namespace analysis::detail;
+  using poly = fixed_field_polynomial<K, 2 * max_stability_degree + 3>;
+  const auto r = stability_function(t);
+  poly Pn, Qd;
+  for (std::size_t k = 0; k <= static_cast<std::size_t>(S); ++k) {
+    Pn.c[k] = r.numerator[k];
+    Qd.c[k] = r.denominator[k];
+  }
+  Pn.trim();
+  Qd.trim();
+  reduce_fraction(Pn, Qd);
+  algebraic_rk_stability_result out;
+  const poly e = squared_modulus_on_axis(Qd) - squared_modulus_on_axis(Pn);
+  out.imaginary_axis = interval_of_conditions(e.is_zero() ? stability_kind::periodic : stability_kind::absolute, std::array<poly, 1>{e});
+  out.bounded_on_imaginary_axis = !out.imaginary_axis.empty && out.imaginary_axis.unbounded;
+  // Q(-w) Hurwitz: the poles of R in the right half-plane.
+  out.poles_in_right_half_plane = routh_hurwitz<K, 2 * max_stability_degree + 2>(
+      Qd.degree, [&](int k) { return k % 2 == 0 ? Qd.c[k] : -Qd.c[k]; }, [](const K& x) { return exact_sign(x); });
+  out.a_stable = out.bounded_on_imaginary_axis && out.poles_in_right_half_plane;
+  out.l_stable = out.a_stable && Pn.degree < Qd.degree;
+  return out;
+}
 
 /// The step on y'' = -y of a fixed-size tableau over algebraic_number<P> (see the top of the file).
 template <class Tableau>
