@@ -311,6 +311,9 @@ catalogue_entry explicit_entry(std::string title, std::string source, int order,
   return e;
 }
 
+/// The stages of the entries over their stage algebra alone (Radau with s = 5; numeric_form).
+inline constexpr int catalogue_algebra_stages = 5;
+
 inline std::vector<catalogue_entry> make_catalogue() {
   std::vector<catalogue_entry> out;
   struct family {
@@ -364,7 +367,7 @@ inline std::vector<catalogue_entry> make_catalogue() {
         const bool right = f.id == collocation_family::radau_iia;
         e.algebra = [right, s] { return right ? radau_iia_algebra(s) : radau_ia_algebra(s); };
       }
-      if (radau && s == 5) {
+      if (radau && s == catalogue_algebra_stages) {
         out.push_back(std::move(e));
         continue;
       }
@@ -404,9 +407,12 @@ inline const std::vector<catalogue_entry>& catalogue() {
 
 /// The Nystrom form of an entry in T, every coefficient at T's full precision: its exact tableau
 /// converted, or the numeric tableau of its stage algebra (methods/collocation_algebra.hpp).
+/// (The entries without a tableau, Radau with s = catalogue_algebra_stages, are the only ones
+/// over their stage algebra alone: one numeric_tableau instantiated per scalar, not eight.)
 template <class T>
 nystrom_form<T> numeric_form(const catalogue_entry& e) {
-  return e.tableau ? to_scalar<T>(nystrom_form_of(e.tableau())) : nystrom_form_of(numeric_tableau<T>(e.algebra()));
+  return e.tableau ? to_scalar<T>(nystrom_form_of(e.tableau()))
+                   : nystrom_form_of(numeric_tableau<T, detail::catalogue_algebra_stages>(e.algebra()));
 }
 
 /// The entry called `name`, or nullptr.

@@ -208,25 +208,34 @@ decltype(auto) with_stage_count(int s, F&& f) {
 }
 }  // namespace detail
 
-/// The method in the scalar T: its nodes, the roots of N, each to T's full precision from its
-/// exact bracket (algebraic_field::root_in), then collocation_rk and, for a complement,
-/// symplectic_complement in T: no Vandermonde solve, every entry to a few ulps of T.
-template <class T>
+/// The method with S = m.stages stages in the scalar T (std::invalid_argument otherwise): its
+/// nodes, the roots of N, each to T's full precision from its exact bracket
+/// (algebraic_field::root_in), then collocation_rk and, for a complement, symplectic_complement
+/// in T: no Vandermonde solve, every entry to a few ulps of T.
+template <class T, int S>
 tableau_data<T> numeric_tableau(const rk_stage_algebra& m) {
+  if (m.stages != S)
+    throw std::invalid_argument("geomint::methods::numeric_tableau: the method has " + std::to_string(m.stages) + " stages, not " +
+                                std::to_string(S));
   const auto brackets = algebraic_field::real_root_brackets(m.node_polynomial);
-  if (static_cast<int>(brackets.size()) != m.stages)
-    throw std::invalid_argument("geomint::methods::numeric_tableau: N must have " + std::to_string(m.stages) + " real roots");
-  std::vector<T> c;
-  for (const auto& [a, b] : brackets)
-    c.push_back(a == b ? rational_to<T>(a) : algebraic_field::make(m.node_polynomial, exact_rational((a + b) / 2))->template root_in<T>());
-  tableau_data<T> out = detail::with_stage_count(m.stages, [&]<int S>() {
-    stage_vector<T, S> nodes;
-    for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) nodes[i] = c[i];
-    const rk<T, S> collocation = collocation_rk<T, S>(nodes);
-    return data_of(m.complement ? symplectic_complement<T, S>(collocation) : collocation);
-  });
+  if (static_cast<int>(brackets.size()) != S)
+    throw std::invalid_argument("geomint::methods::numeric_tableau: N must have " + std::to_string(S) + " real roots");
+  stage_vector<T, S> c;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(S); ++i) {
+    const auto& [a, b] = brackets[i];
+    c[i] = a == b ? rational_to<T>(a) : algebraic_field::make(m.node_polynomial, exact_rational((a + b) / 2))->template root_in<T>();
+  }
+  const rk<T, S> collocation = collocation_rk<T, S>(c);
+  tableau_data<T> out = data_of(m.complement ? symplectic_complement<T, S>(collocation) : collocation);
   out.name = m.name;
   return out;
+}
+
+/// The same for any number of stages, 1..8, known at run time (every S instantiated: where the
+/// count is known, numeric_tableau<T, S> compiles one).
+template <class T>
+tableau_data<T> numeric_tableau(const rk_stage_algebra& m) {
+  return detail::with_stage_count(m.stages, [&]<int S>() { return numeric_tableau<T, S>(m); });
 }
 
 /// Radau IIA and Radau IA with S stages as schemes of the one integrator
@@ -239,7 +248,7 @@ struct radau_numeric {
   static rk_stage_algebra algebra() { return Right ? radau_iia_algebra(S) : radau_ia_algebra(S); }
   template <class T>
   static tableau_data<T> numeric_tableau() {
-    return methods::numeric_tableau<T>(algebra());
+    return methods::numeric_tableau<T, S>(algebra());
   }
   /// The type the integrator reads the kind from (never evaluated).
   static rk<exact_rational, S> tableau();
